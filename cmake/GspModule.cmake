@@ -1,0 +1,26 @@
+# One function builds every module the same way: gsp_module(NAME name SOURCES ... DEPS ...)
+# gives the target gsp_<name> with the alias gsp::<name>, public headers in <dir>/include.
+function(gsp_module)
+  cmake_parse_arguments(M "" "NAME;DIR" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
+  if(NOT M_DIR)
+    set(M_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+  endif()
+  add_library(gsp_${M_NAME} ${M_SOURCES})
+  add_library(gsp::${M_NAME} ALIAS gsp_${M_NAME})
+  target_include_directories(gsp_${M_NAME} PUBLIC $<BUILD_INTERFACE:${M_DIR}/include>)
+  target_link_libraries(gsp_${M_NAME} PUBLIC ${M_DEPS} PRIVATE ${M_PRIVATE_DEPS})
+  target_compile_options(gsp_${M_NAME} PRIVATE ${GSP_WARNINGS})
+  if(GSP_NATIVE)
+    target_compile_options(gsp_${M_NAME} PRIVATE -march=native)
+  endif()
+endfunction()
+
+# gsp_app(name SOURCES ... DEPS ...): one executable in build/bin.
+function(gsp_app NAME)
+  cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${NAME} ${A_SOURCES})
+  target_link_libraries(${NAME} PRIVATE ${A_DEPS})
+  target_compile_options(${NAME} PRIVATE ${GSP_WARNINGS})
+endfunction()
+
+set(GSP_WARNINGS -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter)

@@ -1,0 +1,68 @@
+#pragma once
+// Reading and writing meshes and point clouds. The format is chosen by the file extension.
+// Every reader accounts for every face of the file (polygons are fan-triangulated) or throws
+// gsp::IoError naming the file and the place; no reader allocates from a header count before
+// the data to fill it is known to be there.
+#include <gsp/errors.hpp>
+#include <gsp/mesh.hpp>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gsp::io {
+
+enum class Format { obj, ply, off, stl, gltf, glb, xyz, txt, unknown };
+
+// By extension, case-insensitive (".ply" -> ply, ".txt" -> txt, ...).
+Format format_from_path(const std::string& path);
+const char* format_name(Format f);
+
+struct ReadInfo {
+  Format format = Format::unknown;
+  bool binary = false;
+  std::size_t file_vertices = 0;      // vertices as stored in the file
+  std::size_t file_faces = 0;         // faces/polygons as stored in the file
+  std::size_t polygons_split = 0;     // faces with more than 3 corners that were fan-triangulated
+  bool has_normals = false;
+  std::vector<std::string> notes;     // ignored elements/properties, skipped primitives, ...
+};
+
+struct ReadResult {
+  TriangleMesh mesh;
+  ReadInfo info;
+};
+
+// Throws gsp::IoError (cannot open, unknown format, malformed, truncated, NaN/Inf coordinates,
+// index out of range). Points without faces are returned as a point cloud.
+ReadResult read_mesh(const std::string& path);
+
+// Per-vertex data written next to the geometry.
+struct VertexAttributes {
+  // PLY: `float NAME` vertex properties. glTF: accessor `_NAME` (upper-cased, FLOAT SCALAR).
+  // OBJ/OFF: ignored (colours are written where the format has them).
+  std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  // PLY: `int NAME`. glTF: `_NAME` as FLOAT SCALAR (custom integer attributes are not portable).
+  std::vector<std::pair<std::string, std::vector<std::int32_t>>> labels;
+  // Empty, or one RGBA colour per vertex. PLY red/green/blue/alpha uchar, glTF COLOR_0,
+  // OBJ "v x y z r g b" (the MeshLab extension), OFF as COFF.
+  std::vector<std::array<std::uint8_t, 4>> colors;
+};
+
+struct WriteOptions {
+  bool ascii = false;   // PLY: binary little-endian by default
+};
+
+// Writes atomically: to a temporary file in the same folder, renamed over `path` at the end,
+// so an error never leaves a partial or half-overwritten file. Throws gsp::IoError.
+void write_mesh(const std::string& path, const TriangleMesh& mesh,
+                const VertexAttributes& attributes = {}, const WriteOptions& options = {});
+
+// One value per line, full float precision ("inf" for unreached values), atomically.
+void write_values_txt(const std::string& path, const std::vector<double>& values);
+// Reads what write_values_txt writes (used by gsp-render --field and tests).
+std::vector<double> read_values_txt(const std::string& path);
+
+}  // namespace gsp::io

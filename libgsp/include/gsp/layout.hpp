@@ -1,0 +1,36 @@
+#pragma once
+// Cache-coherent mesh layout by bottom-up clustering (paper, Section 4.3).
+#include <gsp/connectivity.hpp>
+
+#include <vector>
+
+namespace gsp {
+
+// Permutations as new -> old index lists: new vertex i is input vertex vertex_order[i].
+struct Layout {
+  std::vector<Index> vertex_order;
+  std::vector<Index> face_order;
+  // old -> new inverses, for mapping sources in and results out.
+  std::vector<Index> vertex_rank;
+  std::vector<Index> face_rank;
+};
+
+// Greedy bottom-up clustering of vertices with union-find: in round k clusters merge while the
+// merged size stays <= 2^k, pairs with more connecting edges first; leaves of the merge tree
+// in order give the vertex order. Faces follow by their smallest new vertex index.
+Layout compute_cache_layout(const TriangleMesh& mesh);
+
+// A random layout (for benchmarks showing what the optimisation buys).
+Layout random_layout(const TriangleMesh& mesh, std::uint64_t seed);
+
+// The identity layout.
+Layout identity_layout(const TriangleMesh& mesh);
+
+// Positions, normals and triangles reordered by the layout (triangle indices renumbered).
+TriangleMesh apply_layout(const TriangleMesh& mesh, const Layout& layout);
+
+// Mean |i - j| over the vertex pairs (i, j) joined by an edge: the measure of locality
+// the layout should lower.
+double mean_neighbour_index_distance(const TriangleMesh& mesh);
+
+}  // namespace gsp

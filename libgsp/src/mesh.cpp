@@ -1,0 +1,24 @@
+#include <gsp/errors.hpp>
+#include <gsp/mesh.hpp>
+
+#include <string>
+
+namespace gsp {
+
+void validate(const TriangleMesh& mesh) {
+  const std::size_t nv = mesh.num_vertices();
+  if (nv >= kInvalidIndex) throw InvalidInput("mesh has too many vertices for 32-bit indices");
+  for (std::size_t i = 0; i < nv; ++i)
+    if (!is_finite(mesh.positions[i]))
+      throw InvalidInput("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  if (!mesh.normals.empty() && mesh.normals.size() != nv)
+    throw InvalidInput("normal count " + std::to_string(mesh.normals.size()) +
+                       " differs from vertex count " + std::to_string(nv));
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    for (Index v : mesh.triangles[f])
+      if (v >= nv)
+        throw InvalidInput("face " + std::to_string(f) + " names vertex " + std::to_string(v) +
+                           " but there are only " + std::to_string(nv));
+}
+
+}  // namespace gsp

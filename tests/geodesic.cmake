@@ -1,0 +1,1 @@
+# tests of this module are added in the next commit
