@@ -20,10 +20,10 @@ struct InvalidInput : Error {
 // A file could not be read or written. `where` names the place (line, byte offset,
 // accessor) so the message can point at it.
 struct IoError : Error {
-  IoError(const std::string& path, const std::string& where, const std::string& what)
-      : Error(path + (where.empty() ? "" : ":" + where) + ": " + what),
-        path(path), where(where), what_(what) {}
-  std::string path, where, what_;
+  IoError(const std::string& file, const std::string& place, const std::string& problem)
+      : Error(file + (place.empty() ? "" : ":" + place) + ": " + problem),
+        path(file), where(place), problem(problem) {}
+  std::string path, where, problem;
 };
 
 // An algorithm needs a structure the mesh does not have (e.g. exact geodesics on a
