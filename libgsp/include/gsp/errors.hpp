@@ -20,9 +20,9 @@ struct InvalidInput : Error {
 // A file could not be read or written. `where` names the place (line, byte offset,
 // accessor) so the message can point at it.
 struct IoError : Error {
-  IoError(const std::string& file, const std::string& place, const std::string& problem)
-      : Error(file + (place.empty() ? "" : ":" + place) + ": " + problem),
-        path(file), where(place), problem(problem) {}
+  IoError(const std::string& file, const std::string& place, const std::string& what_wrong)
+      : Error(file + (place.empty() ? "" : ":" + place) + ": " + what_wrong),
+        path(file), where(place), problem(what_wrong) {}
   std::string path, where, problem;
 };
 
