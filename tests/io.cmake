@@ -1,1 +1,4 @@
-# tests of this module are added in the next commit
+# Tests of gsp::io: golden counts on the shared meshes, one fixture per format feature
+# (tests/data/io), round trips through every writer, a corpus of broken files, atomic output
+# and colour maps.
+gsp_test(io_shared_meshes SOURCES io_shared_meshes.cpp DEPS gsp::io)

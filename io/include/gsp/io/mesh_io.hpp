@@ -20,6 +20,18 @@ enum class Format { obj, ply, off, stl, gltf, glb, xyz, txt, unknown };
 Format format_from_path(const std::string& path);
 const char* format_name(Format f);
 
+// Per-vertex data written next to the geometry (and read back where the format has it).
+struct VertexAttributes {
+  // PLY: `float NAME` vertex properties. glTF: accessor `_NAME` (upper-cased, FLOAT SCALAR).
+  // OBJ/OFF: ignored (colours are written where the format has them).
+  std::vector<std::pair<std::string, std::vector<float>>> scalars;
+  // PLY: `int NAME`. glTF: `_NAME` as FLOAT SCALAR (custom integer attributes are not portable).
+  std::vector<std::pair<std::string, std::vector<std::int32_t>>> labels;
+  // Empty, or one RGBA colour per vertex. PLY red/green/blue/alpha uchar, glTF COLOR_0,
+  // OBJ "v x y z r g b" (the MeshLab extension), OFF as COFF.
+  std::vector<std::array<std::uint8_t, 4>> colors;
+};
+
 struct ReadInfo {
   Format format = Format::unknown;
   bool binary = false;
@@ -33,23 +45,16 @@ struct ReadInfo {
 struct ReadResult {
   TriangleMesh mesh;
   ReadInfo info;
+  // Per-vertex data the file carries besides positions and normals: PLY scalar vertex
+  // properties (float/double -> scalars, integer types -> labels) and colours; glTF `_NAME`
+  // attributes (-> scalars, name without the underscore) and COLOR_0; OBJ `v x y z r g b` and
+  // COFF colours. An attribute present on only some glTF primitives is dropped (with a note).
+  VertexAttributes attributes;
 };
 
 // Throws gsp::IoError (cannot open, unknown format, malformed, truncated, NaN/Inf coordinates,
 // index out of range). Points without faces are returned as a point cloud.
 ReadResult read_mesh(const std::string& path);
-
-// Per-vertex data written next to the geometry.
-struct VertexAttributes {
-  // PLY: `float NAME` vertex properties. glTF: accessor `_NAME` (upper-cased, FLOAT SCALAR).
-  // OBJ/OFF: ignored (colours are written where the format has them).
-  std::vector<std::pair<std::string, std::vector<float>>> scalars;
-  // PLY: `int NAME`. glTF: `_NAME` as FLOAT SCALAR (custom integer attributes are not portable).
-  std::vector<std::pair<std::string, std::vector<std::int32_t>>> labels;
-  // Empty, or one RGBA colour per vertex. PLY red/green/blue/alpha uchar, glTF COLOR_0,
-  // OBJ "v x y z r g b" (the MeshLab extension), OFF as COFF.
-  std::vector<std::array<std::uint8_t, 4>> colors;
-};
 
 struct WriteOptions {
   bool ascii = false;   // PLY: binary little-endian by default
@@ -57,6 +62,9 @@ struct WriteOptions {
 
 // Writes atomically: to a temporary file in the same folder, renamed over `path` at the end,
 // so an error never leaves a partial or half-overwritten file. Throws gsp::IoError.
+// Formats: .ply (binary little-endian, or ascii), .obj, .off (COFF with colours), .gltf
+// (embedded base64 buffer), .glb. STL and XYZ are read-only: writing them throws IoError.
+// Attribute arrays must have one entry per vertex (gsp::InvalidInput otherwise).
 void write_mesh(const std::string& path, const TriangleMesh& mesh,
                 const VertexAttributes& attributes = {}, const WriteOptions& options = {});
 
