@@ -2,3 +2,12 @@
 # built in code (helpers/mesh_builders.hpp); the shared-data test also needs the readers.
 gsp_test(core_topology SOURCES core_topology.cpp DEPS gsp::core)
 gsp_test(core_weld SOURCES core_weld.cpp DEPS gsp::core)
+gsp_test(core_layout SOURCES core_layout.cpp DEPS gsp::core)
+gsp_test(core_shared_meshes SOURCES core_shared_meshes.cpp DEPS gsp::core gsp::io)
+
+# Not a test: prints the layout's locality and run time on every shared mesh (docs/layout.md).
+add_executable(gsp-layout-report layout_report.cpp)
+target_link_libraries(gsp-layout-report PRIVATE gsp::core gsp::io)
+target_include_directories(gsp-layout-report PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+target_compile_definitions(gsp-layout-report PRIVATE
+  GSP_DATA_DIR="${GSP_DATA_DIR}" GSP_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
