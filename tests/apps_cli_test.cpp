@@ -1,0 +1,204 @@
+// Unit tests of gsp::cli: JSON writer, option parsers, phase timer, error lines, mesh loading.
+#include "apps_support.hpp"
+#include "test_data.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/json.hpp>
+#include <gsp/cli/load.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/cli/timer.hpp>
+#include <gsp/errors.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace {
+
+using gsp::cli::Json;
+using gsp::test::parse_json;
+
+TEST(CliJson, EscapesStringsAndParsesBack) {
+  Json j;
+  const std::string nasty = std::string("quote\" backslash\\ newline\n tab\t bell\x07 del\x7f utf8 \xc3\xa9");
+  j["s"] = nasty;
+  const std::string text = j.dump();
+  EXPECT_NE(text.find("\\u0007"), std::string::npos);
+  EXPECT_NE(text.find("\\u007f"), std::string::npos);
+  EXPECT_NE(text.find("\\n"), std::string::npos);
+  EXPECT_EQ(parse_json(text)["s"].str, std::string("quote\" backslash\\ newline\n tab\t bell\x07 del\x7f utf8 \xc3\xa9"));
+}
+
+TEST(CliJson, DoublesRoundTripAndNonFiniteIsNull) {
+  Json j;
+  const double third = 1.0 / 3.0, tiny = 4.9e-324, big = 1.7976931348623157e308;
+  j["third"] = third;
+  j["tiny"] = tiny;
+  j["big"] = big;
+  j["nan"] = std::numeric_limits<double>::quiet_NaN();
+  j["inf"] = -std::numeric_limits<double>::infinity();
+  j["int"] = -42;
+  j["size"] = std::size_t{18446744073709551615ull};
+  const auto v = parse_json(j.dump());
+  EXPECT_EQ(v["third"].num, third);  // %.17g reads back bit-identical
+  EXPECT_EQ(v["tiny"].num, tiny);
+  EXPECT_EQ(v["big"].num, big);
+  EXPECT_EQ(v["nan"].type, gsp::test::JsonValue::null);
+  EXPECT_EQ(v["inf"].type, gsp::test::JsonValue::null);
+  EXPECT_EQ(v["int"].num, -42.0);
+  EXPECT_NE(j.dump().find("18446744073709551615"), std::string::npos);
+}
+
+TEST(CliJson, NestedObjectsKeepOrderAndReferencesStayValid) {
+  Json j;
+  Json& a = j["a"];
+  a["x"] = 1;
+  for (int i = 0; i < 100; ++i) j["k" + std::to_string(i)] = i;  // grows j after taking `a`
+  a["y"] = 2;                                                      // still valid
+  j["list"] = Json::array();
+  j["list"].push_back(1.5);
+  j["list"].push_back("two");
+  j["list"].push_back(Json::object());
+  j["empty"] = Json::object();
+  const std::string compact = j.dump(-1);
+  EXPECT_EQ(compact.rfind("{\"a\":{\"x\":1,\"y\":2},\"k0\":0,\"k1\":1,", 0), 0u) << compact;
+  const auto v = parse_json(j.dump());
+  EXPECT_EQ(v["a"]["y"].num, 2.0);
+  EXPECT_EQ(v["k99"].num, 99.0);
+  ASSERT_EQ(v["list"].items.size(), 3u);
+  EXPECT_EQ(v["list"].items[1].str, "two");
+  EXPECT_EQ(v["empty"].members.size(), 0u);
+  EXPECT_EQ(j.size(), 103u);
+  EXPECT_THROW(j["list"]["x"], std::logic_error);
+}
+
+TEST(CliParse, IndexLists) {
+  EXPECT_EQ(gsp::cli::parse_index_list("1,2,3", "--v"), (std::vector<gsp::Index>{1, 2, 3}));
+  EXPECT_EQ(gsp::cli::parse_index_list(" 7 , 0", "--v"), (std::vector<gsp::Index>{7, 0}));
+  for (const char* bad : {"", "1,,2", "1,", "-1", "+1", "1.5", "x", "4294967295", "99999999999999999999"})
+    EXPECT_THROW(gsp::cli::parse_index_list(bad, "--v"), gsp::cli::UsageError) << bad;
+  try {
+    gsp::cli::parse_index_list("1,x,3", "--source-vertex");
+    FAIL();
+  } catch (const gsp::cli::UsageError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("--source-vertex"), std::string::npos) << m;
+    EXPECT_NE(m.find("\"x\""), std::string::npos) << m;
+  }
+}
+
+TEST(CliParse, VectorsAndFacePoints) {
+  const gsp::Vec3 p = gsp::cli::parse_vec3("1.5,-2,3e-1", "--p");
+  EXPECT_DOUBLE_EQ(p.x, 1.5);
+  EXPECT_DOUBLE_EQ(p.y, -2.0);
+  EXPECT_DOUBLE_EQ(p.z, 0.3);
+  for (const char* bad : {"1,2", "1,2,3,4", "1,nan,2", "1,inf,2", "a,b,c", "1,2,1e999"})
+    EXPECT_THROW(gsp::cli::parse_vec3(bad, "--p"), gsp::cli::UsageError) << bad;
+
+  const auto fp = gsp::cli::parse_face_point("12:0.25,0.5", "--f");
+  EXPECT_EQ(fp.face, 12u);
+  EXPECT_DOUBLE_EQ(fp.u, 0.25);
+  EXPECT_DOUBLE_EQ(fp.v, 0.5);
+  for (const char* bad : {"12", "12:0.5", "x:0.1,0.1", "-1:0.1,0.1", "3:0.7,0.7", "3:-0.1,0.5", "3:0.1,0.2,0.3"})
+    EXPECT_THROW(gsp::cli::parse_face_point(bad, "--f"), gsp::cli::UsageError) << bad;
+}
+
+TEST(CliParse, OutputFormat) {
+  using gsp::io::Format;
+  EXPECT_EQ(gsp::cli::output_format("a/b.PLY", {Format::ply, Format::obj}), Format::ply);
+  EXPECT_THROW(gsp::cli::output_format("a.stl", {Format::ply, Format::obj}), gsp::cli::UsageError);
+  EXPECT_THROW(gsp::cli::output_format("noext", {Format::ply}), gsp::cli::UsageError);
+}
+
+TEST(CliTimer, AccumulatesPhasesInOrder) {
+  gsp::cli::PhaseTimer t;
+  t.add("read", 0.5);
+  t.add("compute", 1.0);
+  t.add("read", 0.25);
+  EXPECT_DOUBLE_EQ(t.seconds("read"), 0.75);
+  EXPECT_DOUBLE_EQ(t.seconds("never"), 0.0);
+  const int forty_two = t.time("write", [] { return 42; });
+  EXPECT_EQ(forty_two, 42);
+  EXPECT_GE(t.seconds("write"), 0.0);
+  {
+    auto s = t.scope("layout");
+  }
+  const std::string text = t.to_json().dump(-1);
+  EXPECT_EQ(text.rfind("{\"read\":0.75,\"compute\":1,\"write\":", 0), 0u) << text;
+  const auto v = parse_json(text);
+  EXPECT_TRUE(v.has("layout"));
+  EXPECT_GE(v["total"].num, 0.0);
+}
+
+TEST(CliErrors, OneLineMessages) {
+  using gsp::cli::one_line_message;
+  EXPECT_EQ(one_line_message("a\nb\r\n", "", true), "a b");
+  EXPECT_EQ(one_line_message("vertex 3 is bad", "m.obj", true), "m.obj: vertex 3 is bad");
+  EXPECT_EQ(one_line_message("m.obj:line 3: bad", "m.obj", true), "m.obj:line 3: bad");  // names it already
+  EXPECT_EQ(one_line_message("x", "m.obj", false), "x");
+  EXPECT_EQ(one_line_message("", "", false), "unknown error");
+}
+
+TEST(CliLoad, WeldsStlAndMapsBackToFileOrder) {
+  gsp::test::ScratchDir dir("cli");
+  // Two triangles of a unit square as an ASCII STL soup: 6 stored vertices, 4 distinct.
+  const std::string stl =
+      "solid sq\n"
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\nendfacet\n"
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\n"
+      "endsolid sq\n";
+  gsp::test::write_file(dir / "sq.stl", stl);
+  const std::string path = (dir / "sq.stl").string();
+
+  const auto in = gsp::cli::load_mesh(path, {});
+  EXPECT_TRUE(in.welded);
+  EXPECT_EQ(in.mesh.num_vertices(), 4u);
+  EXPECT_EQ(in.file_vertices(), 6u);
+  EXPECT_EQ(in.merged, 2u);
+  EXPECT_EQ(in.file_mesh().num_vertices(), 6u);
+  EXPECT_EQ(in.mesh.num_faces(), 2u);
+  // Values per welded vertex come back one per stored vertex, equal on merged copies.
+  std::vector<double> per_vertex(in.mesh.num_vertices());
+  for (std::size_t v = 0; v < per_vertex.size(); ++v) per_vertex[v] = in.mesh.positions[v].x + 10 * in.mesh.positions[v].y;
+  const auto back = in.to_file_order(per_vertex);
+  ASSERT_EQ(back.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    const gsp::Vec3 p = in.file_mesh().positions[i];
+    EXPECT_DOUBLE_EQ(back[i], p.x + 10 * p.y);
+  }
+  EXPECT_THROW(in.mesh_vertex(6), gsp::InvalidInput);
+
+  gsp::cli::LoadOptions never;
+  never.weld = gsp::cli::WeldMode::never;
+  const auto raw = gsp::cli::load_mesh(path, never);
+  EXPECT_FALSE(raw.welded);
+  EXPECT_EQ(raw.mesh.num_vertices(), 6u);
+  EXPECT_EQ(raw.mesh_vertex(5), 5u);
+}
+
+TEST(CliLoad, PointCloudIsAnErrorUnlessAccepted) {
+  gsp::test::ScratchDir dir("cli");
+  gsp::test::write_file(dir / "p.xyz", "0 0 0\n1 0 0\n0 1 0\n");
+  const std::string path = (dir / "p.xyz").string();
+  try {
+    gsp::cli::load_mesh(path, {});
+    FAIL();
+  } catch (const gsp::IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos);
+  }
+  gsp::cli::LoadOptions accept;
+  accept.require_faces = false;
+  EXPECT_EQ(gsp::cli::load_mesh(path, accept).mesh.num_vertices(), 3u);
+}
+
+TEST(CliLoad, ToleranceMergesNearbyVertices) {
+  gsp::test::ScratchDir dir("cli");
+  gsp::test::write_file(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.0000001 0 0\nv 1 1 0\nf 1 2 3\nf 4 5 3\n");
+  gsp::cli::LoadOptions o;
+  o.weld = gsp::cli::WeldMode::always;
+  EXPECT_EQ(gsp::cli::load_mesh((dir / "t.obj").string(), o).mesh.num_vertices(), 5u);
+  o.weld_tolerance = 1e-5;
+  EXPECT_EQ(gsp::cli::load_mesh((dir / "t.obj").string(), o).mesh.num_vertices(), 4u);
+}
+
+}  // namespace
