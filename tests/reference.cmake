@@ -2,3 +2,7 @@
 # Only included with GSP_WITH_CGAL=ON (tests/CMakeLists.txt).
 gsp_test(reference_exact_geodesics SOURCES reference_exact_geodesics.cpp DEPS gsp::reference)
 gsp_test(reference_heat_method SOURCES reference_heat_method.cpp DEPS gsp::reference)
+gsp_test(adapters_cgal SOURCES adapters_cgal.cpp DEPS gsp::cgal_adapter)
+if(TARGET gsp::openmesh_adapter)
+  gsp_test(adapters_openmesh SOURCES adapters_openmesh.cpp DEPS gsp::openmesh_adapter)
+endif()
