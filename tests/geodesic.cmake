@@ -1,1 +1,1 @@
-# tests of this module are added in the next commit
+gsp_test(geodesic_exactness_test SOURCES geodesic_exactness_test.cpp DEPS gsp::core)

@@ -13,7 +13,7 @@
 namespace gsp {
 
 using detail::FaceState;
-using detail::HalfedgeGeometry;
+using detail::HalfedgeTables;
 using detail::QueueEntry;
 
 struct GeodesicSolver::Impl {
@@ -21,30 +21,48 @@ struct GeodesicSolver::Impl {
   TriangleMesh mesh;               // reordered by the layout
   std::vector<Index> ring;         // radial links with direction bits (see propagation.hpp)
   std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
+  // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
+  // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
+  std::vector<Index> bridge_vertices;
+  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
   Connectivity conn;
   double mean_edge = 1;
   VisibilityHeuristic heuristic;
 
   mutable std::once_flag float_once, double_once;
-  mutable std::vector<HalfedgeGeometry<float>> geo_float;
-  mutable std::vector<HalfedgeGeometry<double>> geo_double;
+  mutable HalfedgeTables<float> tables_float;
+  mutable HalfedgeTables<double> tables_double;
 
+  // Built on first use per precision (most callers only ever need one).
   template <class Real>
-  const std::vector<HalfedgeGeometry<Real>>& geometry() const {
+  const HalfedgeTables<Real>& tables() const {
     if constexpr (std::is_same_v<Real, float>) {
       std::call_once(float_once, [&] {
-        geo_float = detail::build_halfedge_geometry<float>(mesh, 1.0 / mean_edge, heuristic);
+        tables_float = detail::build_halfedge_tables<float>(mesh, 1.0 / mean_edge, heuristic, flat);
       });
-      return geo_float;
+      return tables_float;
     } else {
       std::call_once(double_once, [&] {
-        geo_double = detail::build_halfedge_geometry<double>(mesh, 1.0 / mean_edge, heuristic);
+        tables_double = detail::build_halfedge_tables<double>(mesh, 1.0 / mean_edge, heuristic, flat);
       });
-      return geo_double;
+      return tables_double;
     }
   }
 
   void build_ring();
+  void find_bridge_vertices();
+  // Bridge vertices and the ends of edges with more than two faces.
+  std::vector<Index> nonmanifold_vertices() const {
+    std::vector<Index> out = bridge_vertices;
+    for (Index e = 0; e < conn.num_edges(); ++e) {
+      const Index h = conn.edge_halfedge[e];
+      if (conn.ring_size(h) > 2) {
+        out.push_back(from_vertex(mesh, h));
+        out.push_back(to_vertex(mesh, h));
+      }
+    }
+    return out;
+  }
   template <class Real>
   GeodesicResult run(const std::vector<Source>& sources, const GeodesicOptions& options) const;
 };
@@ -78,6 +96,40 @@ void GeodesicSolver::Impl::build_ring() {
   }
 }
 
+void GeodesicSolver::Impl::find_bridge_vertices() {
+  // Union the faces around each vertex that share an edge through it; more than one group
+  // makes the vertex a bridge.
+  std::vector<Index> parent;
+  std::vector<Index> faces;
+  auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    faces.clear();
+    for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k)
+      if (!skipped_face[face_of(conn.vertex_corners[k])]) faces.push_back(conn.vertex_corners[k]);
+    if (faces.size() < 2) continue;
+    parent.resize(faces.size());
+    for (Index i = 0; i < faces.size(); ++i) parent[i] = i;
+    std::size_t groups = faces.size();
+    for (Index i = 0; i < faces.size(); ++i) {
+      const Index c = faces[i];
+      for (Index h : {c, prev_halfedge(c)}) {   // the two edges of this face through v
+        for (Index g = ring[h] & detail::kRingIndexMask; g != h; g = ring[g] & detail::kRingIndexMask) {
+          const Index f = face_of(g);
+          for (Index j = 0; j < faces.size(); ++j)
+            if (face_of(faces[j]) == f) {
+              const Index a = find(i), b = find(j);
+              if (a != b) parent[a] = b, --groups;
+            }
+        }
+      }
+    }
+    if (groups > 1) bridge_vertices.push_back(v);
+  }
+}
+
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
   validate(input);
@@ -87,6 +139,8 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
   impl_->conn = build_connectivity(impl_->mesh);
   impl_->mean_edge = detail::mean_edge_length(impl_->mesh);
   impl_->build_ring();
+  impl_->find_bridge_vertices();
+  impl_->flat = detail::flat_vertices(impl_->mesh, impl_->ring, impl_->skipped_face, impl_->nonmanifold_vertices());
 }
 
 GeodesicSolver::~GeodesicSolver() = default;
@@ -100,7 +154,8 @@ std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   const bool single = precision == Precision::single;
   const std::size_t state = nf * (single ? sizeof(FaceState<float>) : sizeof(FaceState<double>));
   const std::size_t geometry =
-      3 * nf * (single ? sizeof(HalfedgeGeometry<float>) : sizeof(HalfedgeGeometry<double>));
+      3 * nf * (single ? sizeof(detail::EdgeFrame<float>) + sizeof(detail::EdgeEntry<float>)
+                       : sizeof(detail::EdgeFrame<double>) + sizeof(detail::EdgeEntry<double>));
   return state + geometry + impl_->ring.size() * sizeof(Index);
 }
 
@@ -116,35 +171,42 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
 
 namespace {
 
-// Seeds one face with the exact distances from a point in its plane.
+// Seeds face f with a source at barycentric point b of the face (canonical coordinates are
+// exact for a point of the face itself); `offset` in normalised units.
 template <class Real>
-bool seed_face(const TriangleMesh& mesh, Index f, Vec3 p, double scale, double offset, Index source,
-               FaceState<Real>* state) {
-  const Triangle& t = mesh.triangles[f];
-  const Vec3 c = (1.0 / 3.0) * (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]);
-  const Real dT = Real(offset * scale + scale * distance(c, p));
+bool seed_face(const TriangleMesh& mesh, Index f, const double b[3], double scale, double offset,
+               Index source, FaceState<Real>* state) {
+  double p[3][2];
+  detail::canonical_corners(mesh, f, scale, p);
+  const double sx = b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0];
+  const double sy = b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1];
+  const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
+  const Real dT = Real(offset + std::hypot(gx - sx, gy - sy));
   FaceState<Real>& st = state[f];
   if (!(dT < st.dT)) return false;
-  for (int i = 0; i < 3; ++i) {
-    const double d = scale * distance(mesh.positions[t[i]], p);
-    st.d2[i] = Real(d * d);
-  }
-  st.sigma = Real(offset * scale);
-  st.dT = dT;
-  st.source = source;
+  st = FaceState<Real>{Real(sx), Real(sy), Real(offset), dT, source};
   return true;
 }
 
+const double kCornerWeights[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
 }  // namespace
+
+// Distance of corner c's vertex through its face's virtual source (normalised units).
+template <class Real>
+Real corner_distance(const HalfedgeTables<Real>& tab, const FaceState<Real>& st, Index c) {
+  const detail::EdgeFrame<Real>& fr = tab.frame[c];   // the edge frame of halfedge c starts at corner c
+  return st.sigma + std::sqrt((st.sx - fr.ax) * (st.sx - fr.ax) + (st.sy - fr.ay) * (st.sy - fr.ay));
+}
 
 template <class Real>
 GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
                                          const GeodesicOptions& options) const {
-  const auto& geo = geometry<Real>();
+  const HalfedgeTables<Real>& tab = tables<Real>();
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
-  std::vector<FaceState<Real>> state(nf, FaceState<Real>{{inf, inf, inf}, inf, inf, kInvalidIndex});
+  std::vector<FaceState<Real>> state(nf, FaceState<Real>{0, 0, inf, inf, kInvalidIndex});
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
@@ -173,7 +235,7 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
         const Index c = conn.vertex_corners[k];
         const Index f = face_of(c);
         if (skipped_face[f]) continue;
-        if (seed_face(mesh, f, mesh.positions[v], scale, src.offset, label, state.data()))
+        if (seed_face(mesh, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state.data()))
           queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
       }
     } else {
@@ -187,10 +249,8 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
                            ": barycentric coordinates must be >= 0 and sum to 1");
       const Index f = layout.face_rank[src.element];
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
-      const Triangle& t = mesh.triangles[f];
-      const Vec3 p = (b[0] / sum) * mesh.positions[t[0]] + (b[1] / sum) * mesh.positions[t[1]] +
-                     (b[2] / sum) * mesh.positions[t[2]];
-      if (seed_face(mesh, f, p, scale, src.offset, label, state.data()))
+      const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
+      if (seed_face(mesh, f, w, scale, src.offset * scale, label, state.data()))
         for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
     }
   }
@@ -198,22 +258,59 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
   result.stats.enqueued = queue.size();
 
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
-  detail::UpdateStep<Real> step(geo.data(), ring.data(), state.data(), limit, result.stats);
+  detail::UpdateStep<Real> step(tab, ring.data(), state.data(), limit, result.stats);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
-  using detail::Postpone;
-  switch (options.strategy) {
-    case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, result.stats); break;
-    case Strategy::static_postpone:
-      detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, result.stats);
-      break;
-    case Strategy::dynamic_postpone:
-      detail::run_postpone(step, queue, Postpone::dynamic, f, f0, f1, result.stats);
-      break;
-    case Strategy::hybrid_postpone:
-      detail::run_postpone(step, queue, Postpone::hybrid, f, f0, f1, result.stats);
-      break;
-    case Strategy::bfs: detail::run_postpone(step, queue, Postpone::none, f, f0, f1, result.stats); break;
-    case Strategy::priority_queue: detail::run_priority_queue(step, queue, result.stats); break;
+  auto propagate = [&] {
+    using detail::Postpone;
+    switch (options.strategy) {
+      case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, result.stats); break;
+      case Strategy::static_postpone:
+        detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, result.stats);
+        break;
+      case Strategy::dynamic_postpone:
+        detail::run_postpone(step, queue, Postpone::dynamic, f, f0, f1, result.stats);
+        break;
+      case Strategy::hybrid_postpone:
+        detail::run_postpone(step, queue, Postpone::hybrid, f, f0, f1, result.stats);
+        break;
+      case Strategy::bfs:
+        detail::run_postpone(step, queue, Postpone::none, f, f0, f1, result.stats);
+        break;
+      case Strategy::priority_queue: detail::run_priority_queue(step, queue, result.stats); break;
+    }
+  };
+  propagate();
+
+  // Bridges: a vertex joining fans that share no edge passes the front on as a virtual source
+  // at the vertex. Each round only lowers distances, so this ends; manifold meshes skip it.
+  for (bool changed = !bridge_vertices.empty(); changed;) {
+    changed = false;
+    for (Index v : bridge_vertices) {
+      Real best = inf;
+      Index label = kInvalidIndex;
+      for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
+        const Index c = conn.vertex_corners[k];
+        const FaceState<Real>& st = state[face_of(c)];
+        if (st.source == kInvalidIndex) continue;
+        const Real d = corner_distance(tab, st, c);
+        if (d < best) best = d, label = st.source;
+      }
+      if (!(best <= limit)) continue;
+      for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
+        const Index c = conn.vertex_corners[k];
+        const Index fc = face_of(c);
+        if (skipped_face[fc]) continue;
+        const FaceState<Real> before = state[fc];
+        if (seed_face(mesh, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state.data()) &&
+            state[fc].dT + state[fc].dT * std::numeric_limits<Real>::epsilon() * 4 < before.dT) {
+          queue.push_back({next_halfedge(c), state[fc].dT});
+          changed = true;
+        } else {
+          state[fc] = before;
+        }
+      }
+    }
+    if (changed) propagate();
   }
 
   // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces.
@@ -225,7 +322,7 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
     ++result.stats.faces_reached;
     const Triangle& t = mesh.triangles[fi];
     for (int i = 0; i < 3; ++i) {
-      const double d = (double(st.sigma) + std::sqrt(double(st.d2[i]))) * mean_edge;
+      const double d = double(corner_distance(tab, st, Index(3 * fi + i))) * mean_edge;
       if (d < vdist[t[i]]) {
         vdist[t[i]] = d;
         vlabel[t[i]] = st.source;
@@ -255,9 +352,8 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
     for (std::size_t fi = 0; fi < nf; ++fi) {
       const FaceState<Real>& st = state[fi];
       if (st.source == kInvalidIndex) continue;
-      const double d2[3] = {double(st.d2[0]), double(st.d2[1]), double(st.d2[2])};
       VirtualSource& vs = result.face_sources[layout.face_order[fi]];
-      vs.position = detail::locate_virtual_source(mesh, Index(fi), d2, mean_edge);
+      vs.position = detail::canonical_to_3d(mesh, Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
       vs.sigma = double(st.sigma) * mean_edge;
       vs.source = st.source;
     }

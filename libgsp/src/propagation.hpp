@@ -1,5 +1,5 @@
 #pragma once
-// The GSP update step (paper Section 4.1) and the queue strategies that drive it (Section 4.2).
+// The GSP update step (paper Section 4.1, in canonical face coordinates: see intrinsic_geometry.hpp) and the queue strategies that drive it (Section 4.2).
 // Internal header: templated on the scalar type, instantiated for float and double in
 // geodesic_solver.cpp. The hot loop allocates nothing and calls nothing virtual.
 #include "intrinsic_geometry.hpp"
@@ -24,136 +24,118 @@ inline constexpr Index kRingSelfDir = 0x40000000u;
 
 template <class Real>
 struct FaceState {
-  Real d2[3];     // squared distance of each corner to the virtual source, in the face's unfolding
+  Real sx, sy;    // the virtual source, in the face's canonical frame
   Real sigma;     // path length behind the virtual source
   Real dT;        // distance of the centroid (the key of every comparison)
   Index source;   // which input source this face's path comes from
 };
 
-// A lean-queue entry: the halfedge of the face to propagate from (bit 31: the virtual source lies
-// beyond this edge, on the side of the face we move into), and that face's d_T when queued, so
-// that entries overtaken by a later update are recognised as stale and skipped.
+// A lean-queue entry: the halfedge of the face to propagate from, and that face's d_T when
+// queued, so entries overtaken by a later update of the face are recognised and skipped.
 template <class Real>
 struct QueueEntry {
-  Index code;
+  Index halfedge;
   Real dT;
 };
-
-inline constexpr Index kSideBit = 0x80000000u;
 
 template <class Real>
 class UpdateStep {
  public:
-  UpdateStep(const HalfedgeGeometry<Real>* geometry, const Index* ring, FaceState<Real>* state,
+  UpdateStep(const HalfedgeTables<Real>& tables, const Index* ring, FaceState<Real>* state,
              Real expand_limit, PropagationStats& stats)
-      : geo_(geometry), ring_(ring), state_(state), limit_(expand_limit), stats_(stats) {}
+      : frame_(tables.frame.data()), entry_(tables.entry.data()), ring_(ring), state_(state),
+        limit_(expand_limit), stats_(stats) {}
 
-  bool is_stale(const QueueEntry<Real>& e) const {
-    return state_[face_of(e.code & ~kSideBit)].dT < e.dT;
-  }
+  bool is_stale(const QueueEntry<Real>& e) const { return state_[face_of(e.halfedge)].dT < e.dT; }
 
   // Propagates the virtual source of the entry's face over its halfedge into every other face
   // of the edge's radial ring; push(entry) receives the entries of each improved face.
   template <class Push>
   void expand(const QueueEntry<Real>& entry, Push&& push) {
-    const Index h = entry.code & ~kSideBit;
-    const bool beyond = (entry.code & kSideBit) != 0;
+    const Index h = entry.halfedge;
     const FaceState<Real>& su = state_[face_of(h)];
     if (su.dT < entry.dT) {
       ++stats_.stale_skipped;
       return;
     }
-    const Index ci = corner_of(h);
-    const Real d_from = su.d2[ci];
-    const Real d_to = su.d2[ci == 2 ? 0 : ci + 1];
+    // The source in h's edge frame: U lies on the +y side, so a source "behind" h has y >= 0.
+    const EdgeFrame<Real>& fh = frame_[h];
+    const Real ux = su.sx - fh.ax, uy = su.sy - fh.ay;
+    const Real hx = fh.c * ux + fh.s * uy;
+    const Real hy = fh.c * uy - fh.s * ux;
     const Real sigma = su.sigma;
     const Index source = su.source;
+    const Real e1h = entry_[h].e1;
 
     Index link = ring_[h];
     const bool h_dir = (link & kRingSelfDir) != 0;
     for (Index g = link & kRingIndexMask; g != h; link = ring_[g], g = link & kRingIndexMask) {
       ++stats_.update_steps;
-      // A = from(g). Consistently oriented neighbours run the edge the other way, so A = to(h).
-      const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
-      const Real dA = same_dir ? d_from : d_to;
-      const Real dB = same_dir ? d_to : d_from;
-      const HalfedgeGeometry<Real>& G = geo_[g];
+      const EdgeEntry<Real>& G = entry_[g];
       const Real e1 = G.e1;
-      const Real sx = (e1 * e1 + dA - dB) * G.inv_2e1;
-      const Real sy = std::sqrt(std::max(Real(0), dA - sx * sx));   // source at (sx, -sy)
-      const Real cx = (G.px + e1) * Real(1.0 / 3.0);
-      const Real cy = G.py * Real(1.0 / 3.0);
+      // Unfold into g's frame (T on +y): y flips; x runs from the other end unless the two
+      // faces disagree in orientation and walk the edge the same way.
+      const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
+      const Real sx = same_dir ? hx : e1h - hx;
+      const Real sy = -hy;   // <= 0: the source lies on U's side, as it should
+      const Real cx = G.cx, cy = G.cy;
 
       int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
-      if (!beyond) {
+      if (sy <= 0) {
         // Does the segment probe -> source cross AB? Division-free form of the paper's
-        // t = Qx + alpha (Sx - Qx), scaled by (qy + sy) >= 0.
-        const Real t = G.qx * sy + sx * G.qy;
-        kind = t < 0 ? 1 : (t > e1 * (G.qy + sy) ? 2 : 0);
+        // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
+        const Real t = G.qx * -sy + sx * G.qy;
+        kind = t < 0 ? 1 : (t > e1 * (G.qy - sy) ? 2 : 0);
+        // Around a flat vertex every unfolding agrees and no geodesic turns: the probe's verdict
+        // only matters where the vertex could be a corner.
+        if (kind != 0 && (G.straight_at & unsigned(kind))) kind = 0;
       } else {
-        // The source lies on T's side of the edge: no straight path crosses it; bend at the
-        // end that gives the shorter path source -> corner -> centroid.
-        const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(dA);
-        const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) + std::sqrt(dB);
+        // The source lies on T's side of the edge (the paper's same-side case): no straight
+        // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
+        // (Even at a flat vertex: carrying the source on would let it circle round a vertex
+        // and pick up rounding drift; the face gets the straight path through another edge.)
+        const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
+        const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) +
+                        std::sqrt((sx - e1) * (sx - e1) + sy * sy);
         kind = l1 <= l2 ? 1 : 2;
       }
 
-      Real new_sigma, new_dT, nA, nB, nP;
+      Real new_sigma, new_dT, ex, ey;   // ex, ey: the new source in g's edge frame
       if (kind == 0) {
         new_sigma = sigma;
-        const Real dx = cx - sx, dy = cy + sy;
-        new_dT = sigma + std::sqrt(dx * dx + dy * dy);
-        nA = dA;
-        nB = dB;
-        const Real px = G.px - sx, py = G.py + sy;
-        nP = px * px + py * py;
+        new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
+        ex = sx, ey = sy;
       } else if (kind == 1) {
-        new_sigma = sigma + std::sqrt(dA);
+        new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
         new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
-        nA = 0;
-        nB = e1 * e1;
-        nP = G.px * G.px + G.py * G.py;
+        ex = 0, ey = 0;
       } else {
-        new_sigma = sigma + std::sqrt(dB);
+        new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
         new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
-        nA = e1 * e1;
-        nB = 0;
-        nP = (G.px - e1) * (G.px - e1) + G.py * G.py;
+        ex = e1, ey = 0;
       }
 
-      const Index T = face_of(g);
-      FaceState<Real>& st = state_[T];
+      FaceState<Real>& st = state_[face_of(g)];
       // Only a clearly shorter path counts: an improvement lost in rounding would bounce
       // between faces forever.
       if (!(new_dT + new_dT * kRelativeImprovement < st.dT)) continue;
       ++stats_.face_updates;
-      const Index cj = corner_of(g);
-      const Index cb = cj == 2 ? 0 : cj + 1;
-      const Index cp = cb == 2 ? 0 : cb + 1;
-      st.d2[cj] = nA;
-      st.d2[cb] = nB;
-      st.d2[cp] = nP;
+      const EdgeFrame<Real>& fg = frame_[g];
+      st.sx = fg.ax + fg.c * ex - fg.s * ey;
+      st.sy = fg.ay + fg.s * ex + fg.c * ey;
       st.sigma = new_sigma;
       st.dT = new_dT;
       st.source = source;
       if (!(new_dT <= limit_)) continue;   // max-distance: stored, not expanded
-
-      // Side bits for the two outgoing edges (only a straight update can leave the source
-      // beyond one of them; a source at A or B lies on the lines of both).
-      Index bit_bp = 0, bit_pa = 0;
-      if (kind == 0) {
-        bit_bp = ((G.px - e1) * sy + G.py * (sx - e1) > 0) ? kSideBit : 0;
-        bit_pa = (G.px * sy + G.py * sx < 0) ? kSideBit : 0;
-      }
-      const Index base = g - cj;
-      push(QueueEntry<Real>{(base + cb) | bit_bp, new_dT});
-      push(QueueEntry<Real>{(base + cp) | bit_pa, new_dT});
+      push(QueueEntry<Real>{next_halfedge(g), new_dT});
+      push(QueueEntry<Real>{prev_halfedge(g), new_dT});
     }
   }
 
  private:
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
-  const HalfedgeGeometry<Real>* geo_;
+  const EdgeFrame<Real>* frame_;
+  const EdgeEntry<Real>* entry_;
   const Index* ring_;
   FaceState<Real>* state_;
   Real limit_;
