@@ -2,3 +2,5 @@
 # (tests/data/io), round trips through every writer, a corpus of broken files, atomic output
 # and colour maps.
 gsp_test(io_shared_meshes SOURCES io_shared_meshes.cpp DEPS gsp::io)
+gsp_test(io_read_fixtures SOURCES io_read_fixtures.cpp DEPS gsp::io)
+gsp_test(io_broken_files SOURCES io_broken_files.cpp DEPS gsp::io)

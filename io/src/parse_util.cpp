@@ -47,11 +47,15 @@ bool LineScanner::next(std::string_view& line) {
 
 void LineScanner::fail(const std::string& what) const { throw IoError(path_, line_at(line_), what); }
 
-bool TokenScanner::next(std::string_view& token) {
+void TokenScanner::skip_space() {
   while (pos_ < text_.size() && is_space(text_[pos_])) {
     if (text_[pos_] == '\n') ++line_;
     ++pos_;
   }
+}
+
+bool TokenScanner::next(std::string_view& token) {
+  skip_space();
   if (pos_ >= text_.size()) return false;
   const std::size_t start = pos_;
   while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;

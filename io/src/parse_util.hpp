@@ -50,10 +50,16 @@ class TokenScanner {
   double need_double(const char* what);
   long long need_int(const char* what);
   std::size_t line_number() const { return line_; }
+  // Line of the next token (skips the whitespace before it), for messages about what follows.
+  std::size_t next_line_number() {
+    skip_space();
+    return line_;
+  }
   std::size_t remaining_bytes() const { return text_.size() - pos_; }
   [[noreturn]] void fail(const std::string& what) const;
 
  private:
+  void skip_space();
   const std::string& path_;
   std::string_view text_;
   std::size_t pos_ = 0, line_;

@@ -105,8 +105,8 @@ struct Reader {
       bin->skip(static_cast<std::size_t>(n * type_size(p.type)), "a property");
     }
   }
-  std::string where() const {
-    return enc == Encoding::ascii ? line_at(text->line_number()) : byte_at(bin->pos());
+  std::string where() {
+    return enc == Encoding::ascii ? line_at(text->next_line_number()) : byte_at(bin->pos());
   }
   std::size_t remaining() const { return enc == Encoding::ascii ? text->remaining_bytes() : bin->remaining(); }
 };

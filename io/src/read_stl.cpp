@@ -100,7 +100,8 @@ ReadResult read_stl(const std::string& path, const std::string& bytes) {
   if (bytes.size() >= 84 && binary_size == bytes.size()) return read_binary(path, bytes, n);
   std::size_t s = 0;
   while (s < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[s]))) ++s;
-  if (bytes.compare(s, 5, "solid") == 0) return read_ascii(path, bytes);
+  // "solid" at the start is not enough: binary headers often say it too. Text has no NUL.
+  if (bytes.compare(s, 5, "solid") == 0 && bytes.find('\0') == std::string::npos) return read_ascii(path, bytes);
   if (bytes.size() < 84) throw IoError(path, byte_at(bytes.size()), "truncated: binary STL header needs 84 bytes, file has " + std::to_string(bytes.size()));
   if (binary_size > bytes.size())
     throw IoError(path, byte_at(bytes.size()), "truncated: binary STL declares " + std::to_string(n) + " triangles (" +
