@@ -10,6 +10,8 @@
 #include <gsp/errors.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 
@@ -47,6 +49,28 @@ TEST(CliJson, DoublesRoundTripAndNonFiniteIsNull) {
   EXPECT_EQ(v["inf"].type, gsp::test::JsonValue::null);
   EXPECT_EQ(v["int"].num, -42.0);
   EXPECT_NE(j.dump().find("18446744073709551615"), std::string::npos);
+}
+
+TEST(CliJson, NumbersAreShortButExact) {
+  auto text = [](double d) {
+    std::string s;
+    gsp::cli::append_json_number(s, d);
+    return s;
+  };
+  EXPECT_EQ(text(0.1), "0.1");
+  EXPECT_EQ(text(-75.6563), "-75.6563");
+  EXPECT_EQ(text(1.0 / 3.0), "0.3333333333333333");    // 16 digits
+  EXPECT_EQ(text(0.1 + 0.2), "0.30000000000000004");   // needs all 17
+  EXPECT_EQ(text(2.0), "2");
+  // Exact for arbitrary bit patterns (deterministic LCG over finite doubles).
+  std::uint64_t x = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < 10000; ++i) {
+    x = x * 6364136223846793005ull + 1442695040888963407ull;
+    double d;
+    std::memcpy(&d, &x, sizeof d);
+    if (!std::isfinite(d)) continue;
+    EXPECT_EQ(std::strtod(text(d).c_str(), nullptr), d) << text(d);
+  }
 }
 
 TEST(CliJson, NestedObjectsKeepOrderAndReferencesStayValid) {

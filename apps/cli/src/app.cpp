@@ -114,7 +114,7 @@ int run_app(int argc, char** argv, const std::string& name, const std::string& d
       ctx.write_stats();
       std::cout.flush();
       if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout)
-        throw IoError("<stdout>", "", "cannot write to standard output");
+        throw IoError("standard output", "", "write failed");
     } catch (...) {
       input_path = ctx.input_path();
       throw;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace gsp::cli {
@@ -66,8 +67,13 @@ void append_json_number(std::string& out, double d) {
     out += "null";
     return;
   }
+  // The shortest of %.15g, %.16g, %.17g that reads back bit-identical: as exact as %.17g
+  // (which always round-trips) without printing 0.1 as 0.10000000000000001.
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", d);
+  for (int precision = 15; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, d);
+    if (precision == 17 || std::strtod(buf, nullptr) == d) break;
+  }
   out += buf;
 }
 

@@ -4,22 +4,37 @@
 #include <gsp/errors.hpp>
 #include <gsp/weld.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <numeric>
 
 namespace gsp::cli {
 
 void add_load_options(CLI::App& app, LoadOptions& options) {
-  auto* weld = app.add_flag_callback(
-      "--weld", [&options] { options.weld = WeldMode::always; },
+  // Flag callbacks run during parsing, so a contradiction is a parse error (exit code 2).
+  auto set_mode = [&options](WeldMode mode) {
+    if (options.weld != WeldMode::automatic && options.weld != mode)
+      throw CLI::ValidationError("--weld and --no-weld contradict each other");
+    options.weld = mode;
+  };
+  app.add_flag_callback(
+      "--weld", [set_mode] { set_mode(WeldMode::always); },
       "Merge vertices at the same position whatever the format (default: only STL and glTF/GLB)");
   app.add_flag_callback(
-         "--no-weld", [&options] { options.weld = WeldMode::never; },
-         "Use the file's vertices as stored, even for STL and glTF/GLB")
-      ->excludes(weld);
+      "--no-weld", [set_mode] { set_mode(WeldMode::never); },
+      "Use the file's vertices as stored, even for STL and glTF/GLB");
   app.add_option("--weld-tolerance", options.weld_tolerance,
                  "Merge vertices closer than T (model units) when welding; 0 = identical positions only")
       ->type_name("T")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double t = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !std::isfinite(t) || t < 0)
+              return "\"" + text + "\" is not a finite number >= 0";
+            return {};
+          },
+          "", "non-negative"))
       ->capture_default_str();
 }
 

@@ -163,7 +163,9 @@ void print_text(const Report& r, std::FILE* out) {
     const Summary& a = r.shape.aspect_ratio;
     row(out, "aspect ratio", "min " + num(a.min) + "  median " + num(a.median) + "  mean " + num(a.mean) +
                                  "  p99 " + num(a.p99) + "  max " + num(a.max));
-    row(out, "aspect ratio > 10", num(100.0 * r.shape.aspect_ratio_above_10) + "% of " +
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.3g%%", 100.0 * r.shape.aspect_ratio_above_10);
+    row(out, "aspect ratio > 10", std::string(percent) + " of " +
                                       std::to_string(a.count) + " non-degenerate triangles");
     row(out, "degenerate faces", std::to_string(r.shape.degenerate_faces));
     row(out, "max valence", std::to_string(r.max_valence));

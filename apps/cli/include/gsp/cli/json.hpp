@@ -2,7 +2,8 @@
 // A small JSON value for the apps' machine-readable output (--stats, gsp-info --json).
 //
 // Objects keep their keys in insertion order, so a report reads in the order it was built.
-// Doubles are written with %.17g (they read back bit-identical); NaN and infinities, which
+// Doubles are written with %.17g precision, shortened to %.15g or %.16g when that reads back
+// bit-identical too (0.1 prints as 0.1, 1/3 keeps 17 digits); NaN and infinities, which
 // JSON cannot express, are written as null. Strings are escaped per RFC 8259 (quotes,
 // backslashes, control characters as \uXXXX; other bytes are passed through as UTF-8).
 //
@@ -86,7 +87,7 @@ class Json {
 // The building blocks, for code that streams JSON itself.
 // Appends s as a quoted, escaped JSON string.
 void append_json_string(std::string& out, std::string_view s);
-// Appends d with %.17g, or null when d is not finite.
+// Appends d so that it reads back bit-identical (see above), or null when d is not finite.
 void append_json_number(std::string& out, double d);
 
 }  // namespace gsp::cli
