@@ -6,3 +6,7 @@ gsp_test(adapters_cgal SOURCES adapters_cgal.cpp DEPS gsp::cgal_adapter)
 if(TARGET gsp::openmesh_adapter)
   gsp_test(adapters_openmesh SOURCES adapters_openmesh.cpp DEPS gsp::openmesh_adapter)
 endif()
+if(TARGET gsp::openmesh_adapter)
+  gsp_test(reference_shared_meshes SOURCES reference_shared_meshes.cpp
+    DEPS gsp::reference gsp::cgal_adapter gsp::openmesh_adapter gsp::io)
+endif()
