@@ -137,7 +137,7 @@ TEST_F(GspInfo, TextReportAndLayout) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("file vertices            4494"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("Euler characteristic"), std::string::npos);
-  EXPECT_NE(r.out.find("neighbour index distance"), std::string::npos);
+  EXPECT_NE(r.out.find("neighbour index gap"), std::string::npos);
 
   const JsonValue j = info_json("--layout " + quote(gsp::test::shared_mesh("fertility.off")), dir);
   const JsonValue& l = j["layout"];

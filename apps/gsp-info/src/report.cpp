@@ -175,7 +175,7 @@ void print_text(const Report& r, std::FILE* out) {
 
   if (r.layout) {
     std::fprintf(out, "\nlayout\n");
-    row(out, "neighbour index distance", "before " + num(r.layout->before) + "  after " + num(r.layout->after) +
+    row(out, "neighbour index gap", "before " + num(r.layout->before) + "  after " + num(r.layout->after) +
                                              "  (mean |i-j| over edges)");
     row(out, "layout time", num(r.layout->seconds) + " s");
   }
