@@ -10,3 +10,7 @@ if(TARGET gsp::openmesh_adapter)
   gsp_test(reference_shared_meshes SOURCES reference_shared_meshes.cpp
     DEPS gsp::reference gsp::cgal_adapter gsp::openmesh_adapter gsp::io)
 endif()
+if(TARGET gsp-exact)
+  gsp_test(reference_gsp_exact SOURCES reference_gsp_exact.cpp DEPS gsp::reference gsp::io)
+  add_dependencies(reference_gsp_exact gsp-exact)   # the test runs the binary
+endif()

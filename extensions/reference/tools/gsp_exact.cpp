@@ -3,6 +3,7 @@
 //
 //   gsp-exact mesh.obj --source-vertex 0[,12,...] -o distances.txt [--method exact|heat|heat-idt]
 #include <gsp/errors.hpp>
+#include <gsp/io/atomic_file.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/reference/exact_geodesics.hpp>
 #include <gsp/reference/heat_method.hpp>
@@ -12,12 +13,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #ifndef GSP_VERSION
 #define GSP_VERSION "0.1.0"
@@ -40,7 +42,7 @@ const char* kUsage =
     "                            bit-identical positions only)\n"
     "  --no-weld                 use the vertices as stored\n"
     "  --stats FILE              timings and counts as JSON ('-' for stdout)\n"
-    "  --quiet                   no messages on stderr except errors\n"
+    "  --quiet                   no summary on stderr (printed only to a terminal anyway)\n"
     "  -h, --help                this text\n"
     "  --version                 version\n";
 
@@ -128,23 +130,41 @@ struct Stats {
   double read = 0, build = 0, compute = 0, write = 0;
 };
 
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
 void write_stats(const Options& o, const Stats& s) {
   std::ostringstream json;
-  json << "{\n  \"input\": {\"path\": \"" << o.input << "\", \"vertices\": " << s.file_vertices
+  json << "{\n  \"input\": {\"path\": " << json_string(o.input) << ", \"vertices\": " << s.file_vertices
        << ", \"faces\": " << s.file_faces << ", \"welded_vertices\": " << s.vertices << "},\n"
        << "  \"timings\": {\"read\": " << s.read << ", \"build\": " << s.build
        << ", \"compute\": " << s.compute << ", \"write\": " << s.write << "},\n"
        << "  \"counts\": {\"reached_vertices\": " << s.reached << "},\n"
-       << "  \"settings\": {\"method\": \"" << o.method << "\", \"weld\": " << (o.weld ? "true" : "false")
+       << "  \"settings\": {\"method\": " << json_string(o.method) << ", \"weld\": " << (o.weld ? "true" : "false")
        << ", \"weld_tolerance\": " << o.weld_tolerance << ", \"sources\": [";
   for (std::size_t i = 0; i < o.sources.size(); ++i) json << (i ? ", " : "") << o.sources[i];
   json << "]}\n}\n";
   if (o.stats == "-") {
     std::cout << json.str();
   } else {
-    std::ofstream out(o.stats);
-    out << json.str();
-    if (!out) throw gsp::IoError(o.stats, "", "cannot write the statistics");
+    const std::string text = json.str();
+    gsp::io::AtomicFile file(o.stats);
+    file.write(text.data(), text.size());
+    file.commit();
   }
 }
 
@@ -196,7 +216,8 @@ int run(const Options& o) {
   gsp::io::write_values_txt(o.output, gsp::unweld_values(distances, welded.vertex_map));
   stats.write = seconds_since(t);
   if (!o.stats.empty()) write_stats(o, stats);
-  if (!o.quiet)
+  // A summary for people at a terminal; scripts get nothing but the files.
+  if (!o.quiet && isatty(fileno(stderr)))
     std::fprintf(stderr, "gsp-exact: %zu vertices (%zu after welding), %zu reached, %.3f s build, %.3f s compute\n",
                  stats.file_vertices, stats.vertices, stats.reached, stats.build, stats.compute);
   return 0;
