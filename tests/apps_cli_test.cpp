@@ -6,6 +6,7 @@
 #include <gsp/cli/json.hpp>
 #include <gsp/cli/load.hpp>
 #include <gsp/cli/parse.hpp>
+#include <gsp/cli/progress.hpp>
 #include <gsp/cli/timer.hpp>
 #include <gsp/errors.hpp>
 
@@ -13,7 +14,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <new>
 
 namespace {
 
@@ -223,6 +226,126 @@ TEST(CliLoad, ToleranceMergesNearbyVertices) {
   EXPECT_EQ(gsp::cli::load_mesh((dir / "t.obj").string(), o).mesh.num_vertices(), 5u);
   o.weld_tolerance = 1e-5;
   EXPECT_EQ(gsp::cli::load_mesh((dir / "t.obj").string(), o).mesh.num_vertices(), 4u);
+}
+
+}  // namespace
+
+namespace {
+
+// Runs run_app in-process with `args` and a body, capturing stdout and stderr.
+struct AppRun {
+  int code;
+  std::string out, err;
+};
+AppRun run_app_with(std::vector<std::string> args, const gsp::cli::BodyFn& body) {
+  args.insert(args.begin(), "gsp-test");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::string input;
+  ::testing::internal::CaptureStdout();
+  ::testing::internal::CaptureStderr();
+  const int code = gsp::cli::run_app(
+      static_cast<int>(args.size()), argv.data(), "gsp-test", "A test app.",
+      [&](CLI::App& app) { app.add_option("INPUT", input); },
+      [&](gsp::cli::Context& ctx) {
+        ctx.set_input("in.obj");
+        body(ctx);
+      });
+  AppRun r{code, "", ""};
+  r.out = ::testing::internal::GetCapturedStdout();
+  r.err = ::testing::internal::GetCapturedStderr();
+  return r;
+}
+
+TEST(CliRunApp, MapsExceptionsToExitCodesAndOneLine) {
+  struct Case {
+    std::function<void()> thrower;
+    int code;
+    std::string err;
+  };
+  const std::vector<Case> cases = {
+      {[] { throw gsp::IoError("in.obj", "line 3", "bad token"); }, 1, "gsp-test: error: in.obj:line 3: bad token\n"},
+      {[] { throw gsp::InvalidInput("source vertex 9 does not exist"); }, 1,
+       "gsp-test: error: in.obj: source vertex 9 does not exist\n"},
+      {[] { throw gsp::TopologyError("needs a manifold\nmesh"); }, 1, "gsp-test: error: in.obj: needs a manifold mesh\n"},
+      {[] { throw std::bad_alloc(); }, 1, "gsp-test: error: in.obj: out of memory\n"},
+      {[] { throw std::runtime_error("boom"); }, 1, "gsp-test: error: in.obj: boom\n"},
+      {[] { throw 42; }, 1, "gsp-test: error: unknown error\n"},
+      {[] { throw gsp::cli::UsageError("--x: \"y\": bad"); }, 2,
+       "gsp-test: error: --x: \"y\": bad\nRun with --help for more information.\n"},
+  };
+  for (const Case& c : cases) {
+    const AppRun r = run_app_with({"in.obj"}, [&](gsp::cli::Context&) { c.thrower(); });
+    EXPECT_EQ(r.code, c.code) << c.err;
+    EXPECT_EQ(r.err, c.err);
+    EXPECT_EQ(r.out, "");
+  }
+}
+
+TEST(CliRunApp, ParseErrorsHelpVersionAndStats) {
+  const auto noop = [](gsp::cli::Context&) {};
+  const AppRun bad = run_app_with({"--nope"}, noop);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_EQ(bad.err.rfind("gsp-test: error: ", 0), 0u) << bad.err;
+
+  const AppRun version = run_app_with({"--version"}, noop);
+  EXPECT_EQ(version.code, 0);
+  EXPECT_EQ(version.out, std::string("gsp-test ") + gsp::cli::version() + "\n");
+
+  const AppRun help = run_app_with({"--help"}, noop);
+  EXPECT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("--stats"), std::string::npos);
+
+  const AppRun stats = run_app_with({"in.obj", "--stats", "-", "-q"}, [](gsp::cli::Context& ctx) {
+    EXPECT_TRUE(ctx.quiet());
+    EXPECT_TRUE(ctx.stats_to_stdout());
+    ctx.input()["vertices"] = 3;
+    ctx.operations()["updates"] = 7;
+    ctx.timer().add("compute", 0.5);
+  });
+  ASSERT_EQ(stats.code, 0) << stats.err;
+  const auto j = parse_json(stats.out);
+  EXPECT_EQ(j["app"].str, "gsp-test");
+  EXPECT_EQ(j["input"]["vertices"].num, 3.0);
+  EXPECT_EQ(j["operations"]["updates"].num, 7.0);
+  EXPECT_EQ(j["timings"]["compute"].num, 0.5);
+  EXPECT_TRUE(j["timings"].has("total"));
+}
+
+TEST(CliRunApp, StatsFileOnlyOnSuccess) {
+  gsp::test::ScratchDir dir("cli");
+  const std::string path = (dir / "s.json").string();
+  const AppRun failed = run_app_with({"in.obj", "--stats", path}, [](gsp::cli::Context&) { throw gsp::Error("x"); });
+  EXPECT_EQ(failed.code, 1);
+  EXPECT_TRUE(dir.entries().empty());  // neither the file nor its temporary
+  const AppRun ok = run_app_with({"in.obj", "--stats", path}, [](gsp::cli::Context& ctx) { ctx.settings()["k"] = "v"; });
+  EXPECT_EQ(ok.code, 0);
+  EXPECT_EQ(parse_json(gsp::test::slurp(path))["settings"]["k"].str, "v");
+}
+
+TEST(CliProgress, DisabledReporterIsSilentAndHasNoCallback) {
+  gsp::cli::Progress p("gsp-test", "computing", false);
+  EXPECT_FALSE(p.enabled());
+  EXPECT_FALSE(static_cast<bool>(p.callback()));
+  ::testing::internal::CaptureStderr();
+  p.update(0.5);
+  p.finish();
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
+}
+
+TEST(CliProgress, EnabledReporterDrawsAndErasesItsLine) {
+  ::testing::internal::CaptureStderr();
+  {
+    gsp::cli::Progress p("gsp-test", "computing", true);
+    auto cb = p.callback();
+    ASSERT_TRUE(static_cast<bool>(cb));
+    cb(0.0);
+    cb(0.001);   // same percent: no redraw
+    cb(1.0);     // 100% always drawn
+  }
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(err, "\rgsp-test: computing   0%\rgsp-test: computing 100%\r\033[K");
 }
 
 }  // namespace
