@@ -4,3 +4,6 @@
 gsp_test(io_shared_meshes SOURCES io_shared_meshes.cpp DEPS gsp::io)
 gsp_test(io_read_fixtures SOURCES io_read_fixtures.cpp DEPS gsp::io)
 gsp_test(io_broken_files SOURCES io_broken_files.cpp DEPS gsp::io)
+gsp_test(io_round_trip SOURCES io_round_trip.cpp DEPS gsp::io)
+gsp_test(io_atomic_file SOURCES io_atomic_file.cpp DEPS gsp::io)
+gsp_test(io_colormap SOURCES io_colormap.cpp DEPS gsp::io)

@@ -64,7 +64,10 @@ struct Reader {
   TokenScanner* text = nullptr;
 
   double scalar(Type t) {
-    if (enc == Encoding::ascii) return text->need_double("a property value");
+    if (enc == Encoding::ascii) {
+      const double v = text->need_double("a property value");
+      return t == Type::f32 ? static_cast<float>(v) : v;   // a float property holds a float
+    }
     const bool be = enc == Encoding::big;
     switch (t) {
       case Type::i8: return bin->read<std::int8_t>(be, "a char property");
