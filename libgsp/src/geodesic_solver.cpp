@@ -6,6 +6,7 @@
 #include <gsp/geodesics.hpp>
 #include <gsp/topology.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -28,6 +29,7 @@ struct GeodesicSolver::Impl {
   Connectivity conn;
   double mean_edge = 1;
   VisibilityHeuristic heuristic;
+  SolverTimings timings;
 
   mutable std::once_flag float_once, double_once;
   mutable HalfedgeTables<float> tables_float;
@@ -132,15 +134,22 @@ void GeodesicSolver::Impl::find_bridge_vertices() {
 
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
+  using Clock = std::chrono::steady_clock;
   validate(input);
+  auto t0 = Clock::now();
   impl_->heuristic = options.heuristic;
   impl_->layout = options.optimize_layout ? compute_cache_layout(input) : identity_layout(input);
   impl_->mesh = apply_layout(input, impl_->layout);
+  auto t1 = Clock::now();
   impl_->conn = build_connectivity(impl_->mesh);
   impl_->mean_edge = detail::mean_edge_length(impl_->mesh);
   impl_->build_ring();
   impl_->find_bridge_vertices();
   impl_->flat = detail::flat_vertices(impl_->mesh, impl_->ring, impl_->skipped_face, impl_->nonmanifold_vertices());
+  impl_->tables<float>();
+  auto t2 = Clock::now();
+  impl_->timings.layout = std::chrono::duration<double>(t1 - t0).count();
+  impl_->timings.build = std::chrono::duration<double>(t2 - t1).count();
 }
 
 GeodesicSolver::~GeodesicSolver() = default;
@@ -148,6 +157,7 @@ GeodesicSolver::GeodesicSolver(GeodesicSolver&&) noexcept = default;
 GeodesicSolver& GeodesicSolver::operator=(GeodesicSolver&&) noexcept = default;
 
 const Layout& GeodesicSolver::layout() const { return impl_->layout; }
+const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   const std::size_t nf = impl_->mesh.num_faces();

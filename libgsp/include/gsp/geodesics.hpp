@@ -93,6 +93,12 @@ struct GeodesicResult {
   double distance_at(const TriangleMesh& mesh, Index face, std::array<double, 3> bary) const;
 };
 
+// Seconds spent preparing a solver (library code measures, apps report).
+struct SolverTimings {
+  double layout = 0;   // compute_cache_layout + reordering
+  double build = 0;    // connectivity, radial rings, per-halfedge tables (single precision)
+};
+
 struct SolverOptions {
   bool optimize_layout = true;   // reorder with compute_cache_layout (results keep input order)
   VisibilityHeuristic heuristic = VisibilityHeuristic::published();
@@ -112,6 +118,7 @@ class GeodesicSolver {
   GeodesicResult compute(const std::vector<Source>& sources, const GeodesicOptions& options = {}) const;
 
   const Layout& layout() const;
+  const SolverTimings& timings() const;
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
 
  private:

@@ -1,0 +1,105 @@
+// gsp-geodesic: geodesic distances on a triangle mesh from vertices, surface points or points
+// inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
+#include "options.hpp"
+#include "output.hpp"
+#include "sources.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/dijkstra.hpp>
+#include <gsp/geodesics.hpp>
+#include <gsp/io/mesh_io.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace {
+
+using namespace gsp;
+using namespace gsp::geodesic_app;
+
+void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces) {
+  std::size_t reached = 0;
+  double max_d = 0, sum = 0;
+  for (double d : r.vertex_distance)
+    if (std::isfinite(d)) ++reached, sum += d, max_d = std::max(max_d, d);
+  cli::Json& res = ctx.stats()["result"];
+  res["vertices_reached"] = reached;
+  res["vertices_unreached"] = r.vertex_distance.size() - reached;
+  res["max_distance"] = max_d;
+  res["mean_distance"] = reached ? sum / double(reached) : 0.0;
+  cli::Json& ops = ctx.operations();
+  ops["update_steps"] = r.stats.update_steps;
+  ops["face_updates"] = r.stats.face_updates;
+  ops["enqueued"] = r.stats.enqueued;
+  ops["stale_skipped"] = r.stats.stale_skipped;
+  ops["postponed"] = r.stats.postponed;
+  ops["iterations"] = r.stats.iterations;
+  ops["faces_reached"] = r.stats.faces_reached;
+  ops["update_steps_per_face"] = faces ? double(r.stats.update_steps) / double(faces) : 0.0;
+}
+
+void run(cli::Context& ctx, const Options& o) {
+  // Checked before any work, so a typo in the extension costs nothing.
+  cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::off, io::Format::gltf,
+                                io::Format::glb, io::Format::txt});
+  const Strategy strategy = parse_strategy(o.strategy);
+  const Precision precision = parse_precision(o.precision);
+  const VisibilityHeuristic heuristic = parse_heuristic(o.heuristic);
+  double max_distance = std::numeric_limits<double>::infinity();
+  if (!o.max_distance.empty()) {
+    max_distance = cli::parse_number(o.max_distance, "--max-distance");
+    if (max_distance < 0) throw cli::UsageError("--max-distance: must be >= 0");
+  }
+
+  const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  const ResolvedSources src = resolve_sources(o, in);
+  ctx.settings()["method"] = o.method;
+  ctx.settings()["sources"] = src.sources.size();
+  if (std::isfinite(max_distance)) ctx.settings()["max_distance"] = max_distance;
+  if (!o.source_points.empty()) ctx.stats()["result"]["max_snap_distance"] = src.max_snap_distance;
+
+  GeodesicResult result;
+  if (o.method == "dijkstra") {
+    DijkstraSolver solver = ctx.timer().time("build", [&] { return DijkstraSolver(in.mesh); });
+    result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, max_distance); });
+  } else {
+    SolverOptions so;
+    so.optimize_layout = !o.no_layout;
+    so.heuristic = heuristic;
+    GeodesicSolver solver(in.mesh, so);
+    ctx.timer().add("layout", solver.timings().layout);
+    ctx.timer().add("build", solver.timings().build);
+    GeodesicOptions go;
+    go.strategy = strategy;
+    go.precision = precision;
+    go.f = o.f;
+    go.max_distance = max_distance;
+    result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, go); });
+    ctx.settings()["strategy"] = o.strategy;
+    ctx.settings()["precision"] = o.precision;
+    ctx.settings()["heuristic"] = o.heuristic;
+    ctx.settings()["step"] = o.f;
+    ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";
+    ctx.stats()["memory"]["state_bytes_per_vertex"] =
+        in.mesh.num_vertices() ? double(solver.state_bytes(precision)) / double(in.mesh.num_vertices()) : 0.0;
+  }
+  report_result(ctx, result, in.mesh.num_faces());
+  const bool labels = o.labels || src.sources.size() > 1;
+  ctx.timer().time("write", [&] {
+    write_field(o.output, in, result.vertex_distance, result.vertex_source, labels, o.ascii);
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  return gsp::cli::run_app(
+      argc, argv, "gsp-geodesic",
+      "Geodesic distances on a triangle mesh by Geodesic Source Propagation.",
+      [&](CLI::App& app) { add_options(app, options); },
+      [&](gsp::cli::Context& ctx) { run(ctx, options); });
+}

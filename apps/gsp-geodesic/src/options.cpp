@@ -1,0 +1,78 @@
+#include "options.hpp"
+
+#include <gsp/cli/app.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <fstream>
+#include <sstream>
+
+namespace gsp::geodesic_app {
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("INPUT", o.input, "input mesh (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("-o,--output", o.output,
+                 "output: .ply (float distance + quality + colours), .glb/.gltf (_DISTANCE + COLOR_0), "
+                 ".obj/.off (colours), .txt (one distance per input vertex)")
+      ->required();
+  app.add_option("--source-vertex", o.source_vertices, "source vertices (input vertex indices)")
+      ->type_name("I[,J,...]");
+  app.add_option("--source-point", o.source_points, "source at the surface point closest to x,y,z")
+      ->type_name("X,Y,Z");
+  app.add_option("--source-face", o.source_faces,
+                 "source inside face F at barycentric weights u, v of its corners 1 and 2")
+      ->type_name("F:U,V");
+  app.add_option("--max-distance", o.max_distance,
+                 "stop at this distance (model units); farther vertices are unreached")
+      ->type_name("D");
+  app.add_option("--method", o.method, "gsp (default) or dijkstra (edge graph, for comparison)")
+      ->check(CLI::IsMember({"gsp", "dijkstra"}));
+  app.add_option("--strategy", o.strategy,
+                 "queue strategy: speed-limiter (default), static-postpone, dynamic-postpone, "
+                 "hybrid-postpone, bfs, priority-queue");
+  app.add_option("--precision", o.precision, "single (default) or double")
+      ->check(CLI::IsMember({"single", "double"}));
+  app.add_option("--heuristic", o.heuristic,
+                 "visibility heuristic: published (default), centroid, opposite-corner, or a file "
+                 "with 20 numbers");
+  app.add_option("--step", o.f, "dual-queue step f in mean edge lengths (default 1)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--no-layout", o.no_layout, "keep the input's memory layout (no cache reordering)");
+  app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");
+  app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  cli::add_load_options(app, o.load);
+}
+
+Strategy parse_strategy(const std::string& name) {
+  if (name == "speed-limiter") return Strategy::speed_limiter;
+  if (name == "static-postpone") return Strategy::static_postpone;
+  if (name == "dynamic-postpone") return Strategy::dynamic_postpone;
+  if (name == "hybrid-postpone") return Strategy::hybrid_postpone;
+  if (name == "bfs") return Strategy::bfs;
+  if (name == "priority-queue") return Strategy::priority_queue;
+  throw cli::UsageError("--strategy: \"" + name +
+                        "\" is not one of speed-limiter, static-postpone, dynamic-postpone, "
+                        "hybrid-postpone, bfs, priority-queue");
+}
+
+Precision parse_precision(const std::string& name) {
+  return name == "double" ? Precision::double_precision : Precision::single;
+}
+
+VisibilityHeuristic parse_heuristic(const std::string& name) {
+  if (name == "published") return VisibilityHeuristic::published();
+  if (name == "centroid") return VisibilityHeuristic::centroid();
+  if (name == "opposite-corner") return VisibilityHeuristic::opposite_corner();
+  std::ifstream in(name);
+  if (!in) throw cli::UsageError("--heuristic: \"" + name +
+                                 "\" is neither published, centroid, opposite-corner nor a readable file");
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return VisibilityHeuristic::from_string(text.str());
+  } catch (const InvalidInput& e) {
+    throw cli::UsageError("--heuristic " + name + ": " + e.what());
+  }
+}
+
+}  // namespace gsp::geodesic_app

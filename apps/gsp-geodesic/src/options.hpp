@@ -1,0 +1,39 @@
+#pragma once
+// What gsp-geodesic is asked to do, as parsed from the command line.
+#include <gsp/cli/load.hpp>
+#include <gsp/geodesics.hpp>
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace gsp::geodesic_app {
+
+struct Options {
+  std::string input, output;
+  std::vector<std::string> source_vertices;   // "I[,J,...]", repeatable
+  std::vector<std::string> source_points;     // "x,y,z", repeatable
+  std::vector<std::string> source_faces;      // "F:u,v", repeatable
+  std::string max_distance;                   // empty: none
+  std::string method = "gsp";                 // gsp | dijkstra
+  std::string strategy = "speed-limiter";
+  std::string precision = "single";
+  std::string heuristic = "published";        // published | centroid | opposite-corner | FILE
+  double f = 1.0;
+  bool no_layout = false;
+  bool ascii = false;
+  bool labels = false;
+  cli::LoadOptions load;
+};
+
+void add_options(CLI::App& app, Options& options);
+
+// Checked conversions (UsageError on unknown names).
+Strategy parse_strategy(const std::string& name);
+Precision parse_precision(const std::string& name);
+VisibilityHeuristic parse_heuristic(const std::string& name_or_file);
+
+}  // namespace gsp::geodesic_app

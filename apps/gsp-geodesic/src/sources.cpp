@@ -1,0 +1,45 @@
+#include "sources.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/closest_point.hpp>
+#include <gsp/errors.hpp>
+
+#include <algorithm>
+#include <string>
+
+namespace gsp::geodesic_app {
+
+ResolvedSources resolve_sources(const Options& o, const cli::LoadedMesh& in) {
+  ResolvedSources r;
+  const TriangleMesh& mesh = in.mesh;
+  for (const std::string& arg : o.source_vertices)
+    for (Index file_vertex : cli::parse_index_list(arg, "--source-vertex")) {
+      const Index v = in.mesh_vertex(file_vertex);   // the user counts the file's vertices
+      r.sources.push_back(Source::at_vertex(v));
+      r.positions.push_back(mesh.positions[v]);
+    }
+  for (const std::string& arg : o.source_points) {
+    const Vec3 p = cli::parse_vec3(arg, "--source-point");
+    const SurfacePoint s = closest_surface_point(mesh, p);
+    r.sources.push_back(Source::in_face(s.face, s.barycentric));
+    r.positions.push_back(s.position);
+    r.max_snap_distance = std::max(r.max_snap_distance, s.distance);
+  }
+  for (const std::string& arg : o.source_faces) {
+    const cli::FacePoint fp = cli::parse_face_point(arg, "--source-face");
+    if (fp.face >= mesh.num_faces())
+      throw InvalidInput("--source-face: face " + std::to_string(fp.face) + " does not exist (" +
+                         std::to_string(mesh.num_faces()) + " faces)");
+    const std::array<double, 3> b{std::max(0.0, 1 - fp.u - fp.v), fp.u, fp.v};
+    const Triangle& t = mesh.triangles[fp.face];
+    r.sources.push_back(Source::in_face(fp.face, b));
+    r.positions.push_back(b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] +
+                          b[2] * mesh.positions[t[2]]);
+  }
+  if (r.sources.empty())
+    throw cli::UsageError("no source: give --source-vertex, --source-point or --source-face");
+  return r;
+}
+
+}  // namespace gsp::geodesic_app
