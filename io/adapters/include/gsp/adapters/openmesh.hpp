@@ -30,7 +30,8 @@ struct ToOpenMeshResult {
 
 // Faces are added in input order. Vertex normals are requested and filled when the mesh
 // has normals. OpenMesh's own error stream is silenced during the conversion (it would
-// print one line per refused face). Throws InvalidInput for indices out of range.
+// print one line per refused face); that stream is process-wide, so other threads' OpenMesh
+// messages are muted meanwhile too. Throws InvalidInput for indices out of range.
 ToOpenMeshResult<OpenMeshTriMesh> to_openmesh(const TriangleMesh& mesh);
 ToOpenMeshResult<OpenMeshTriMeshD> to_openmesh_double(const TriangleMesh& mesh);
 
