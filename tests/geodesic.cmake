@@ -1,3 +1,6 @@
 gsp_test(geodesic_exactness_test SOURCES geodesic_exactness_test.cpp DEPS gsp::core)
 gsp_test(geodesic_invariants_test SOURCES geodesic_invariants_test.cpp DEPS gsp::core gsp::io)
 gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gsp::io)
+if(GSP_WITH_CGAL)
+  gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
+endif()

@@ -108,11 +108,15 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vec
       if ((ring[h] & 0x3fffffffu) == h) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
     }
   }
+  // Angle sums of meshes stored in float (STL, glTF, most CAD exports) are off 2 pi by far
+  // more than double rounding; 1e-4 (0.04 degrees of defect) still calls no curved vertex of
+  // a scanned surface flat. Measured: camelhead MRE 0.37% at 1e-5, 0.28% at 1e-4, 1.2% at 1e-3.
+  constexpr double tol = 1e-4;
   std::vector<std::uint8_t> flat(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
     if (!used[v]) continue;
-    flat[v] = boundary[v] ? angle[v] <= kPi * (1 + 1e-6)
-                          : std::abs(angle[v] - 2 * kPi) <= 2 * kPi * 1e-6;
+    flat[v] = boundary[v] ? angle[v] <= kPi * (1 + tol)
+                          : std::abs(angle[v] - 2 * kPi) <= 2 * kPi * tol;
   }
   for (Index v : nonmanifold_vertices) flat[v] = 0;
   return flat;

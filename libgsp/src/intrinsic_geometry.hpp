@@ -37,7 +37,7 @@ struct HalfedgeTables {
 };
 
 // Per vertex: true where no shortest path can bend — interior vertices whose angle sum is 2 pi
-// and boundary vertices whose angle sum is at most pi (within a relative 1e-6). Unfolding
+// and boundary vertices whose angle sum is at most pi (within a relative 1e-4). Unfolding
 // around such a vertex is the same from either side, so a source that the visibility probe
 // sees past the vertex is still exact when carried straight on. This makes GSP exact on flat
 // and developable regions (planar CAD faces, fans) whatever the heuristic says.
