@@ -1,0 +1,33 @@
+#pragma once
+// Exact distances cached on disk. CGAL needs about a second per source on a 15k-vertex mesh
+// (ten or more on 35k), while a training run evaluates thousands of heuristics against the
+// same references: compute them once, keyed by the mesh's content and the source vertex, so
+// a renamed or re-welded file never reuses stale values.
+#include <gsp/mesh.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gsp::train {
+
+// FNV-1a over the bytes of positions and triangles (the mesh the distances were computed on).
+std::uint64_t mesh_hash(const TriangleMesh& mesh);
+
+class ExactCache {
+ public:
+  explicit ExactCache(std::string dir);   // "" disables the cache; the folder is created on demand
+  bool enabled() const { return !dir_.empty(); }
+
+  // The cached distances, or nothing when absent or not matching `num_vertices`.
+  std::optional<std::vector<double>> load(std::uint64_t hash, Index source, std::size_t num_vertices) const;
+  // Written atomically (temporary file + rename); throws gsp::IoError when it cannot write.
+  void store(std::uint64_t hash, Index source, const std::vector<double>& distances) const;
+
+ private:
+  std::string path(std::uint64_t hash, Index source) const;
+  std::string dir_;
+};
+
+}  // namespace gsp::train
