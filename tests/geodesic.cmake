@@ -4,3 +4,7 @@ gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gs
 if(GSP_WITH_CGAL)
   gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
 endif()
+if(TARGET gsp-geodesic)
+  gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io)
+  add_dependencies(geodesic_app_test gsp-geodesic)   # the test runs the binary
+endif()

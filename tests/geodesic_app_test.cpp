@@ -1,0 +1,132 @@
+// gsp-geodesic end to end: the binary's outputs agree value by value with the library, in the
+// file's own vertex order, in every format; errors follow the CLI contract.
+#include "apps_support.hpp"
+#include "test_data.hpp"
+
+#include <gsp/geodesics.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/weld.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace gsp::test {
+namespace {
+
+const std::string kApp = "gsp-geodesic";
+
+std::string sample() { return std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off"; }
+
+TEST(GeodesicApp, TxtMatchesTheLibraryInInputOrder) {
+  ScratchDir dir("geodesic");
+  const auto r = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 12 -o " + quote((dir / "d.txt").string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
+  const TriangleMesh m = io::read_mesh(sample()).mesh;
+  const std::vector<double> lib = geodesic_distances(m, {Source::at_vertex(12)}).vertex_distance;
+  ASSERT_EQ(got.size(), lib.size());
+  for (std::size_t v = 0; v < lib.size(); ++v) ASSERT_NEAR(got[v], lib[v], 1e-6 * (1 + lib[v])) << v;
+  EXPECT_EQ(got[12], 0.0);
+}
+
+TEST(GeodesicApp, EveryOutputFormatKeepsTheFilesVertices) {
+  ScratchDir dir("geodesic");
+  for (const char* ext : {"ply", "glb", "gltf", "obj", "off"}) {
+    const std::string out = (dir / (std::string("d.") + ext)).string();
+    const auto r = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 0,100 -o " + quote(out), dir);
+    ASSERT_EQ(r.exit_code, 0) << ext << ": " << r.err;
+    const io::ReadResult back = io::read_mesh(out);
+    EXPECT_EQ(back.mesh.num_vertices(), 4494u) << ext;
+    EXPECT_EQ(back.mesh.num_faces(), 9000u) << ext;
+  }
+}
+
+TEST(GeodesicApp, StlIsWeldedAndWrittenInTheFilesOrder) {
+  if (!have_shared_data()) GTEST_SKIP();
+  ScratchDir dir("geodesic");
+  const std::string stl = shared_mesh("thingi10k_88566_fence_panels.stl");
+  const auto r = run(bin(kApp) + " " + quote(stl) + " --source-vertex 0 -o " + quote((dir / "d.txt").string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
+  const TriangleMesh raw = io::read_mesh(stl).mesh;
+  ASSERT_EQ(got.size(), raw.num_vertices());   // 16,032 file vertices, not the 2,624 welded ones
+  // Copies of one welded vertex carry one value, and distances cross the seams: far more
+  // vertices are reached than the source's own triangle.
+  const WeldResult w = weld_vertices(raw);
+  std::vector<double> welded_value(w.mesh.num_vertices(), -1);
+  std::size_t reached = 0;
+  for (std::size_t v = 0; v < raw.num_vertices(); ++v) {
+    double& seen = welded_value[w.vertex_map[v]];
+    if (seen >= 0 || std::isinf(seen)) EXPECT_EQ(got[v], seen) << "copies of one point differ";
+    seen = got[v];
+    if (std::isfinite(got[v])) ++reached;
+  }
+  EXPECT_GT(reached, 100u);
+}
+
+TEST(GeodesicApp, SourcePointSnapsToTheSurface) {
+  ScratchDir dir("geodesic");
+  const TriangleMesh m = io::read_mesh(sample()).mesh;
+  const Vec3 p = m.positions[7];
+  const std::string xyz = std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z);
+  const auto r = run(bin(kApp) + " " + quote(sample()) + " --source-point " + xyz + " -o " +
+                         quote((dir / "d.txt").string()) + " --stats -", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
+  EXPECT_LT(got[7], 1e-4);
+  const JsonValue stats = JsonParser(r.out).parse();
+  EXPECT_EQ(stats["result"]["vertices_reached"].num, 4494);
+  EXPECT_GT(stats["operations"]["update_steps"].num, 0);
+}
+
+TEST(GeodesicApp, MaxDistanceAndDijkstra) {
+  ScratchDir dir("geodesic");
+  const auto full = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 3 -o " + quote((dir / "full.txt").string()), dir);
+  const auto cut = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 3 --max-distance 20 -o " +
+                           quote((dir / "cut.txt").string()), dir);
+  const auto dij = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 3 --method dijkstra -o " +
+                           quote((dir / "dij.txt").string()), dir);
+  ASSERT_EQ(full.exit_code, 0);
+  ASSERT_EQ(cut.exit_code, 0);
+  ASSERT_EQ(dij.exit_code, 0);
+  const auto a = io::read_values_txt((dir / "full.txt").string());
+  const auto b = io::read_values_txt((dir / "cut.txt").string());
+  const auto d = io::read_values_txt((dir / "dij.txt").string());
+  std::size_t inside = 0;
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    if (a[v] < 19) {
+      ++inside;
+      EXPECT_NEAR(b[v], a[v], 1e-5 * (1 + a[v]));
+    }
+    if (a[v] > 21) EXPECT_TRUE(std::isinf(b[v]));
+    EXPECT_GE(d[v], a[v] * 0.99);   // edge paths are never much shorter than geodesics
+  }
+  EXPECT_GT(inside, 20u);
+}
+
+TEST(GeodesicApp, ErrorsFollowTheContract) {
+  ScratchDir dir("geodesic");
+  const std::string out = (dir / "x.ply").string();
+  // No source: usage error.
+  EXPECT_EQ(run(bin(kApp) + " " + quote(sample()) + " -o " + quote(out), dir).exit_code, 2);
+  // Vertex out of range: input error, one line naming the file, nothing written.
+  const auto r = run(bin(kApp) + " " + quote(sample()) + " --source-vertex 99999 -o " + quote(out), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("fertility.off"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // Broken input file.
+  write_file(dir / "broken.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n");
+  const auto b = run(bin(kApp) + " " + quote((dir / "broken.ply").string()) + " --source-vertex 0 -o " + quote(out), dir);
+  EXPECT_EQ(b.exit_code, 1);
+  EXPECT_EQ(lines(b.err).size(), 1u) << b.err;
+  EXPECT_FALSE(fs::exists(out));
+  // Unknown output extension: usage error before any work.
+  EXPECT_EQ(run(bin(kApp) + " " + quote(sample()) + " --source-vertex 0 -o " + quote((dir / "x.xyz1").string()), dir).exit_code, 2);
+  // Bad strategy name.
+  EXPECT_EQ(run(bin(kApp) + " " + quote(sample()) + " --source-vertex 0 --strategy fast -o " + quote(out), dir).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace gsp::test
