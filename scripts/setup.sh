@@ -3,7 +3,9 @@
 #   1. installs the Debian packages the project needs (only those missing; apt is not
 #      touched at all when everything is there),
 #   2. configures and builds a Release build with Ninja in build/,
-#   3. runs gsp-info on the bundled sample and converts it, writing out/fertility.ply.
+#   3. runs the main job on the bundled sample: geodesic distances from one vertex of
+#      data/samples/fertility.off, written to out/fertility-distance.ply (float distance,
+#      quality and colours per vertex) with a preview picture out/fertility-distance.png.
 # Usage: scripts/setup.sh [--no-build]      (run as root, or with sudo available)
 set -euo pipefail
 
@@ -52,8 +54,8 @@ jobs=${GSP_JOBS:-$(nproc)}
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"
 
-# The main job on the bundled sample: describe it, then convert it (result in out/).
+# The main job on the bundled sample: a geodesic distance field and its picture (in out/).
 mkdir -p out
-build/bin/gsp-info data/samples/fertility.off
-build/bin/gsp-info -q data/samples/fertility.off -o out/fertility.ply --stats out/fertility-info.json
-echo "setup.sh: done; wrote out/fertility.ply and out/fertility-info.json"
+build/bin/gsp-geodesic data/samples/fertility.off --source-vertex 0 \
+  -o out/fertility-distance.ply --png out/fertility-distance.png --stats out/fertility-distance.json
+echo "setup.sh: done; wrote out/fertility-distance.ply, out/fertility-distance.png and out/fertility-distance.json"

@@ -9,6 +9,7 @@
 #include <gsp/dijkstra.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/render/render.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -42,6 +43,17 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
 }
 
 void run(cli::Context& ctx, const Options& o) {
+  render::RenderOptions preview;
+  if (!o.png.empty()) {
+    if (io::format_from_path(o.png) != io::Format::unknown || o.png.size() < 4 ||
+        o.png.substr(o.png.size() - 4) != ".png")
+      throw cli::UsageError("--png: \"" + o.png + "\" does not end in .png");
+    const std::vector<double> view = cli::parse_number_list(o.view, "--view");
+    if (view.size() != 2) throw cli::UsageError("--view: expected azimuth,elevation");
+    preview.azimuth = view[0], preview.elevation = view[1];
+    preview.width = preview.height = o.png_size;
+    preview.supersample = 2;
+  }
   // Checked before any work, so a typo in the extension costs nothing.
   cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::off, io::Format::gltf,
                                 io::Format::glb, io::Format::txt});
@@ -91,6 +103,10 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.timer().time("write", [&] {
     write_field(o.output, in, result.vertex_distance, result.vertex_source, labels, o.ascii);
   });
+  if (!o.png.empty())
+    ctx.timer().time("preview", [&] {
+      render::render_field_preview(o.png, in.mesh, result.vertex_distance, src.positions, preview);
+    });
 }
 
 }  // namespace

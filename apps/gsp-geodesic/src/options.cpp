@@ -40,6 +40,12 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--no-layout", o.no_layout, "keep the input's memory layout (no cache reordering)");
   app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  app.add_option("--png", o.png, "also write a preview picture: the field with iso-lines, sources in red")
+      ->type_name("FILE.png");
+  app.add_option("--view", o.view, "preview camera: azimuth,elevation in degrees (default 30,20)")
+      ->type_name("AZ,EL");
+  app.add_option("--png-size", o.png_size, "preview width and height in pixels (default 800)")
+      ->check(CLI::Range(16, 8192));
   cli::add_load_options(app, o.load);
 }
 

@@ -26,6 +26,9 @@ struct Options {
   bool no_layout = false;
   bool ascii = false;
   bool labels = false;
+  std::string png;                            // preview picture, empty: none
+  std::string view = "30,20";                 // azimuth,elevation in degrees
+  int png_size = 800;
   cli::LoadOptions load;
 };
 
