@@ -79,6 +79,39 @@ TEST(RenderApp, PlyPropertyGivesTheSamePictureAsTheTextField) {
   EXPECT_FALSE(fs::exists(dir / "c.png"));
 }
 
+TEST(RenderApp, LabelPropertyColoursFacesByTheirCornersLabel) {
+  // A quad strip in z = 0 whose left half is labelled 0 and right half 1 (per vertex, PLY int).
+  ScratchDir dir("render-app");
+  gsp::TriangleMesh m;
+  for (int i = 0; i <= 4; ++i) {
+    m.positions.push_back({double(i), 0, 0});
+    m.positions.push_back({double(i), 1, 0});
+  }
+  for (gsp::Index i = 0; i < 4; ++i) {
+    m.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+    m.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  }
+  std::vector<std::int32_t> label;
+  for (const gsp::Vec3& p : m.positions) label.push_back(p.x < 2.5 ? 0 : 1);
+  gsp::io::write_mesh((dir / "s.ply").string(), m, {{}, {{"region", label}}, {}});
+  const auto r = run(quote(kRender) + " " + quote((dir / "s.ply").string()) +
+                         " --label-property region --up z --view 0,90 --size 200 -o " + quote((dir / "s.png").string()),
+                     dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const gsp::render::Image im = gsp::render::read_png((dir / "s.png").string());
+  // Seen from above: x runs left to right, the strip over pixels ~11..189 (44.5 px per unit).
+  // Faces between x = 2 and 3 mix labels; the outer quads are pure.
+  const gsp::render::Rgba left = im.pixel(30, 100), right = im.pixel(170, 100);
+  EXPECT_FALSE(gsp::test::near(left, right, 20));
+  EXPECT_TRUE(gsp::test::near(left, im.pixel(50, 105), 2));
+  EXPECT_TRUE(gsp::test::near(right, im.pixel(155, 95), 2));
+  EXPECT_FALSE(gsp::test::same(left, {255, 255, 255, 255}));
+  const auto bad = run(quote(kRender) + " " + quote((dir / "s.ply").string()) + " --label-property nope -o " +
+                           quote((dir / "t.png").string()),
+                       dir);
+  EXPECT_EQ(bad.exit_code, 1);
+}
+
 TEST(RenderApp, BadInputIsExitOneAndNamesTheFile) {
   if (!gsp::test::have_shared_data()) GTEST_SKIP() << "shared meshes not found";
   ScratchDir dir("render-app");
@@ -111,7 +144,7 @@ TEST(RenderApp, UsageErrorsAreExitTwo) {
   for (const std::string& args :
        {mesh + out + " --size 0", mesh + out + " --size 10x", mesh + out + " --view 10", mesh + out + " --view a,b",
         mesh + " -o " + quote((dir / "x.jpg").string()), mesh + out + " --colormap jet", mesh + out + " --iso -1",
-        mesh + out + " --range 2,1", mesh + out + " --background pink", mesh + out + " --field a.txt --property q",
+        mesh + out + " --range 2,1", mesh + out + " --background pink", mesh + out + " --field a.txt --property q", mesh + out + " --labels a.txt --label-property q",
         mesh}) {
     const auto r = run(quote(kRender) + " " + args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;

@@ -186,6 +186,21 @@ TEST(RenderShading, FaceLabelsGetDistinctColours) {
   EXPECT_GT(diff, 0.1);
 }
 
+TEST(RenderShading, IsoLinesAreDrawnOverLabels) {
+  // Voronoi regions with distance lines: the labels give the colour, the field the lines.
+  render::Scene scene;
+  scene.mesh = test::icosphere(4);
+  scene.face_labels.assign(scene.mesh.num_faces(), 3);
+  render::RenderOptions o = options(128, 10);
+  const render::Image labels_only = render::render(scene, o);
+  scene.vertex_field = height(scene.mesh);
+  const render::Image with_field = render::render(scene, o);
+  o.iso_lines = 0;
+  const render::Image no_lines = render::render(scene, o);
+  EXPECT_EQ(no_lines.rgba, labels_only.rgba);        // the field does not change the colour
+  EXPECT_GT(darker_pixels(with_field, labels_only), 300u);
+}
+
 TEST(RenderShading, PolylineTubeIsDrawnInTheLineColour) {
   render::Scene scene;
   scene.polylines = {{{-1, 0, 0}, {0, 0, 0}, {1, 0, 0}}};

@@ -17,7 +17,7 @@ namespace {
 
 struct Options {
   std::string input, output;
-  std::string field, property, labels, points, polylines;
+  std::string field, property, labels, label_property, points, polylines;
   std::vector<std::string> source_vertices, source_points;
   std::string size, view, range, background = "white", colormap = "viridis", up = "y";
   bool wireframe = false, antialias = false;
@@ -33,6 +33,8 @@ void run(gsp::cli::Context& ctx, Options& opt) {
     throw cli::UsageError("-o: \"" + opt.output + "\": the picture must be a .png file");
   if (!opt.field.empty() && !opt.property.empty())
     throw cli::UsageError("--field and --property both give the field: choose one");
+  if (!opt.labels.empty() && !opt.label_property.empty())
+    throw cli::UsageError("--labels and --label-property both give the labels: choose one");
   render::RenderOptions& ro = opt.render;
   if (!opt.size.empty()) render_app::parse_size(opt.size, ro);
   if (!opt.view.empty()) render_app::parse_view(opt.view, ro);
@@ -62,6 +64,11 @@ void run(gsp::cli::Context& ctx, Options& opt) {
       scene.vertex_field = to_mesh_order(v);
     }
     if (!opt.labels.empty()) scene.face_labels = render_app::read_labels(opt.labels, in.mesh.num_faces());
+    if (!opt.label_property.empty()) {
+      std::vector<double> v = render_app::read_property(opt.input, opt.label_property);
+      if (v.size() != nfile) throw IoError(opt.input, "", "property '" + opt.label_property + "' has the wrong length");
+      scene.face_labels = render_app::face_labels_from_vertices(to_mesh_order(v), in.mesh.triangles, opt.input);
+    }
     if (!opt.points.empty()) scene.points = render_app::read_points(opt.points);
     if (!opt.polylines.empty()) scene.polylines = render_app::read_polylines(opt.polylines);
   });
@@ -117,6 +124,10 @@ int main(int argc, char** argv) {
         app.add_option("--labels", opt.labels, "Per-face integer labels, one per line (e.g. Voronoi regions); "
                                                "each label gets its own colour, < 0 none")
             ->type_name("FILE.txt");
+        app.add_option("--label-property", opt.label_property,
+                       "Colour faces by the mesh file's per-vertex integer property NAME (e.g. gsp-geodesic's "
+                       "'source': geodesic Voronoi regions); a face takes its corners' majority label")
+            ->type_name("NAME");
         app.add_option("--points", opt.points, "Draw these points as small spheres (any mesh/point format)")
             ->type_name("FILE");
         app.add_option("--polylines", opt.polylines,

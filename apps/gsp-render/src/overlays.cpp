@@ -45,6 +45,21 @@ std::vector<std::int32_t> read_labels(const std::string& path, std::size_t expec
   return out;
 }
 
+std::vector<std::int32_t> face_labels_from_vertices(const std::vector<double>& vertex_labels,
+                                                    const std::vector<Triangle>& triangles, const std::string& path) {
+  for (double v : vertex_labels)
+    if (!(std::abs(v) < 2147483647.0) || v != std::floor(v))
+      throw IoError(path, "", "a vertex label must be an integer, found " + std::to_string(v));
+  std::vector<std::int32_t> out;
+  out.reserve(triangles.size());
+  for (const Triangle& t : triangles) {
+    const auto a = std::int32_t(vertex_labels[t[0]]), b = std::int32_t(vertex_labels[t[1]]),
+               c = std::int32_t(vertex_labels[t[2]]);
+    out.push_back((b == c && a != b) ? b : a);
+  }
+  return out;
+}
+
 std::vector<Vec3> read_points(const std::string& path) {
   io::ReadResult r = io::read_mesh(path);
   if (r.mesh.positions.empty()) throw IoError(path, "", "no points");

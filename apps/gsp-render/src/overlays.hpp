@@ -20,6 +20,12 @@ std::vector<double> read_property(const std::string& mesh_path, const std::strin
 // Integers, one per line (face labels): IoError for a value that is not an integer.
 std::vector<std::int32_t> read_labels(const std::string& path, std::size_t expected);
 
+// Face labels from per-vertex labels (e.g. gsp-geodesic's `source` property): the label most
+// corners of a face have, the first corner's when all three differ. Non-integer values throw
+// IoError naming `path`.
+std::vector<std::int32_t> face_labels_from_vertices(const std::vector<double>& vertex_labels,
+                                                    const std::vector<Triangle>& triangles, const std::string& path);
+
 // Points: any format gsp::io::read_mesh reads (.xyz, .ply, .obj, ...); its vertex positions.
 std::vector<Vec3> read_points(const std::string& path);
 

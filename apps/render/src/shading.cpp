@@ -72,13 +72,12 @@ Color shade_mesh(const ShadingSetup& s, const RayHit& hit) {
   const double n2 = dot(ng, ng);
   const double w1 = hit.u, w2 = hit.v, w0 = 1.0 - w1 - w2;
 
-  // Base colour: labels, else the field, else the plain surface.
+  // Base colour: labels, else the field, else the plain surface. The field's iso-lines are
+  // drawn over labels too (Voronoi regions with distance lines).
   Color c = to_color(o.surface_color);
   bool finite_field = false;
   double value = 0.0;
-  if (!scene.face_labels.empty() && scene.face_labels[hit.primitive] >= 0) {
-    c = to_color(label_color(scene.face_labels[hit.primitive]));
-  } else if (s.has_field) {
+  if (s.has_field) {
     const double f0 = scene.vertex_field[tri[0]], f1 = scene.vertex_field[tri[1]], f2 = scene.vertex_field[tri[2]];
     finite_field = std::isfinite(f0) && std::isfinite(f1) && std::isfinite(f2);
     if (finite_field) {
@@ -88,6 +87,8 @@ Color shade_mesh(const ShadingSetup& s, const RayHit& hit) {
       c = to_color(o.unreached_color);
     }
   }
+  if (!scene.face_labels.empty() && scene.face_labels[hit.primitive] >= 0)
+    c = to_color(label_color(scene.face_labels[hit.primitive]));
 
   // Ray differentials on the triangle's plane: dP/dx = t (dx - d (n.dx) / (n.d)).
   const double nd = dot(ng, hit.direction);

@@ -12,7 +12,9 @@ namespace gsp::render {
 struct Scene {
   TriangleMesh mesh;                        // may be empty (points / lines only)
   std::vector<double> vertex_field;         // empty, or one value per mesh vertex; NaN/inf = unreached (grey)
-  std::vector<std::int32_t> face_labels;    // empty, or one per face (e.g. Voronoi regions); < 0 = none
+  // Empty, or one per face (e.g. Voronoi regions); < 0 = none. Labels colour their faces in
+  // place of the field; the field's iso-lines are still drawn over them.
+  std::vector<std::int32_t> face_labels;
   std::vector<Vec3> points;                 // drawn as small spheres
   std::vector<std::vector<Vec3>> polylines; // drawn as tubes (paths, iso-curves)
   std::vector<Vec3> sources;                // drawn as larger red spheres
