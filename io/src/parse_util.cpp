@@ -1,6 +1,7 @@
 #include "parse_util.hpp"
 
 #include <charconv>
+#include <cmath>
 
 namespace gsp::io::detail {
 
@@ -40,7 +41,7 @@ bool LineScanner::next(std::string_view& line) {
   if (end == std::string_view::npos) end = text_.size();
   line = text_.substr(pos_, end - pos_);
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-  pos_ = end + 1;
+  pos_ = end < text_.size() ? end + 1 : end;
   ++line_;
   return true;
 }
@@ -82,7 +83,7 @@ long long TokenScanner::need_int(const char* what) {
   if (!parse_int(t, v)) {
     // Some writers store integers as "3.0"; accept them when they are whole numbers.
     double d;
-    if (parse_double(t, d) && d == static_cast<double>(static_cast<long long>(d)) && std::abs(d) < 9e15)
+    if (parse_double(t, d) && std::isfinite(d) && std::abs(d) < 9e15 && d == std::floor(d))
       return static_cast<long long>(d);
     fail("'" + std::string(t.substr(0, 40)) + "' is not an integer (" + what + ")");
   }

@@ -14,6 +14,7 @@ namespace {
 
 std::uint8_t unit_to_byte(double c) {
   // Colours in OBJ are 0..1 floats (MeshLab); a file with 0..255 values is rescaled by the caller.
+  if (!std::isfinite(c)) return 0;
   return static_cast<std::uint8_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
 }
 
@@ -95,7 +96,9 @@ ReadResult read_obj(const std::string& path, const std::string& bytes) {
   if (all_colored && !colors.empty()) {
     // Values above 1 mean the writer used 0..255.
     double top = 0;
-    for (const auto& c : colors) top = std::max({top, c[0], c[1], c[2]});
+    for (const auto& c : colors)
+      for (double x : c)
+        if (std::isfinite(x)) top = std::max(top, x);
     const double scale = top > 1.0 ? 1.0 / 255.0 : 1.0;
     r.attributes.colors.reserve(colors.size());
     for (const auto& c : colors)

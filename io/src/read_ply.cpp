@@ -65,6 +65,7 @@ struct Reader {
 
   double scalar(Type t) {
     if (enc == Encoding::ascii) {
+      if (is_integer(t)) return static_cast<double>(text->need_int("an integer property value"));
       const double v = text->need_double("a property value");
       return t == Type::f32 ? static_cast<float>(v) : v;   // a float property holds a float
     }
@@ -153,6 +154,9 @@ ReadResult read_ply(const std::string& path, const std::string& bytes) {
     } else if (tok[0] == "element") {
       long long n;
       if (tok.size() < 3 || !parse_int(tok[2], n) || n < 0) header.fail("element needs a name and a count");
+      for (const Element& e : elements)
+        if (e.name == tok[1] && (e.name == "vertex" || e.name == "face"))
+          header.fail("a second '" + e.name + "' element");
       elements.push_back({std::string(tok[1]), static_cast<std::uint64_t>(n), {}, header.line_number()});
     } else if (tok[0] == "property") {
       if (elements.empty()) header.fail("property before any element");
