@@ -164,6 +164,19 @@ TEST(RenderCamera, BoundingSphereIgnoresUnreferencedVerticesAndCountsOverlays) {
   EXPECT_NEAR(b.radius, std::sqrt(1.5 * 1.5 + 0.25), 1e-12);
 }
 
+TEST(RenderCamera, SinglePointIsFramedWithUnitRadius) {
+  render::Scene scene;
+  scene.points = {{5, -3, 1e6}};   // far from the origin: positions are taken relative to it
+  scene.point_radius = 0.2;
+  EXPECT_EQ(render::bounding_sphere(scene).radius, 1.0);
+  render::RenderOptions o = plain(101, 101);
+  const render::Image im = render::render(scene, o);
+  EXPECT_FALSE(same(im.pixel(50, 50), o.background));
+  // Radius 0.2 of a framed radius 1.05: about 0.2 / 1.05 of the half-picture, ~10 px.
+  const auto b = box_of(im, [&](render::Rgba c) { return !same(c, o.background); });
+  EXPECT_NEAR(0.5 * (b.x1 - b.x0 + 1), 50.5 * 0.2 / 1.05, 1.5);
+}
+
 TEST(RenderCamera, RejectsBadOptionsAndScenes) {
   render::Scene scene;
   EXPECT_THROW(render::render(scene, plain(8, 8)), InvalidInput);   // nothing to draw

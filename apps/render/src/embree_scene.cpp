@@ -26,12 +26,25 @@ void check(RTCDevice device, const char* what) {
   if (e != RTC_ERROR_NONE) throw Error(std::string("render: Embree failed to ") + what + ": " + error_name(e));
 }
 
+// Owns a geometry until it is attached, so that a failure on the way releases it.
+struct GeometryHandle {
+  RTCGeometry g;
+  explicit GeometryHandle(RTCGeometry geometry) : g(geometry) {}
+  ~GeometryHandle() {
+    if (g) rtcReleaseGeometry(g);
+  }
+  GeometryHandle(const GeometryHandle&) = delete;
+  GeometryHandle& operator=(const GeometryHandle&) = delete;
+};
+
 void attach_spheres(RTCDevice device, RTCScene scene, const std::vector<Vec3>& centres, Vec3 origin,
                     double radius, unsigned id) {
   if (centres.empty()) return;
   if (!rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_POINT_GEOMETRY_SUPPORTED))
     throw Error("render: this Embree build has no point geometry (needed to draw points and sources)");
-  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+  GeometryHandle handle(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT));
+  check(device, "create a sphere geometry");
+  RTCGeometry g = handle.g;
   auto* v = static_cast<float*>(
       rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), centres.size()));
   check(device, "allocate sphere vertices");
@@ -44,7 +57,6 @@ void attach_spheres(RTCDevice device, RTCScene scene, const std::vector<Vec3>& c
   }
   rtcCommitGeometry(g);
   rtcAttachGeometryByID(scene, g, id);
-  rtcReleaseGeometry(g);
 }
 
 void attach_tubes(RTCDevice device, RTCScene scene, const std::vector<std::vector<Vec3>>& polylines, Vec3 origin,
@@ -69,7 +81,9 @@ void attach_tubes(RTCDevice device, RTCScene scene, const std::vector<std::vecto
   if (segments.empty()) return;
   if (!rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_CURVE_GEOMETRY_SUPPORTED))
     throw Error("render: this Embree build has no round linear curves (needed to draw polylines)");
-  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  GeometryHandle handle(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE));
+  check(device, "create a curve geometry");
+  RTCGeometry g = handle.g;
   auto* v = static_cast<float*>(
       rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), points.size()));
   auto* idx = static_cast<unsigned*>(
@@ -90,12 +104,13 @@ void attach_tubes(RTCDevice device, RTCScene scene, const std::vector<std::vecto
   }
   rtcCommitGeometry(g);
   rtcAttachGeometryByID(scene, g, kLineGeometry);
-  rtcReleaseGeometry(g);
 }
 
 void attach_mesh(RTCDevice device, RTCScene scene, const TriangleMesh& mesh, Vec3 origin) {
   if (mesh.triangles.empty()) return;
-  RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  GeometryHandle handle(rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE));
+  check(device, "create a triangle geometry");
+  RTCGeometry g = handle.g;
   auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                         3 * sizeof(float), mesh.positions.size()));
   check(device, "allocate mesh vertices");
@@ -112,7 +127,6 @@ void attach_mesh(RTCDevice device, RTCScene scene, const TriangleMesh& mesh, Vec
   rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_LOW);
   rtcCommitGeometry(g);
   rtcAttachGeometryByID(scene, g, kMeshGeometry);
-  rtcReleaseGeometry(g);
 }
 
 }  // namespace

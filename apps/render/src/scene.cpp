@@ -80,8 +80,8 @@ BoundingSphere bounding_sphere(const Scene& s) {
   for (const auto& line : s.polylines)
     for (const Vec3& p : line) reach(p);
   for (const Vec3& p : s.sources) reach(p);
-  const double scale = std::max({std::abs(b.center.x), std::abs(b.center.y), std::abs(b.center.z), 1e-30});
-  b.radius = std::max(std::sqrt(r2), 1e-9 * scale);
+  // A single point (or all at one place) has no size: frame one model unit around it.
+  b.radius = r2 > 0.0 ? std::sqrt(r2) : 1.0;
   return b;
 }
 

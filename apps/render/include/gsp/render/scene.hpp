@@ -34,7 +34,7 @@ struct BoundingSphere {
 };
 
 // Centre of the axis-aligned box of everything drawn (mesh, points, lines, sources), radius
-// the largest distance from it; at least a tiny positive radius for a single point.
+// the largest distance from it; 1 when everything is at one point.
 BoundingSphere bounding_sphere(const Scene& scene);
 
 }  // namespace gsp::render
