@@ -27,6 +27,8 @@ struct VisibilityHeuristic {
   static VisibilityHeuristic centroid();
   // lambda = 0 everywhere: probe at the opposite corner (conservative: over-estimates).
   static VisibilityHeuristic opposite_corner();
+  // Retrained on our own meshes by gsp-train-heuristic (docs/heuristic.md).
+  static VisibilityHeuristic trained();
 
   // Table index for a triangle with shared edge e1, longest/shortest edges max_e/min_e and
   // height h over e1.
