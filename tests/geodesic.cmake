@@ -9,3 +9,5 @@ if(TARGET gsp-geodesic)
   gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io)
   add_dependencies(geodesic_app_test gsp-geodesic)   # the test runs the binary
 endif()
+gsp_test(geodesic_intrinsic_delaunay_test SOURCES geodesic_intrinsic_delaunay_test.cpp DEPS gsp::core)
+target_include_directories(geodesic_intrinsic_delaunay_test PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)

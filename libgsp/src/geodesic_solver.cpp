@@ -1,5 +1,6 @@
 #include "propagation.hpp"
 #include "virtual_source.hpp"
+#include "intrinsic_delaunay.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
@@ -17,19 +18,13 @@ using detail::FaceState;
 using detail::HalfedgeTables;
 using detail::QueueEntry;
 
-struct GeodesicSolver::Impl {
-  Layout layout;
-  TriangleMesh mesh;               // reordered by the layout
-  std::vector<Index> ring;         // radial links with direction bits (see propagation.hpp)
-  std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
-  // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
-  // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
-  std::vector<Index> bridge_vertices;
-  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
-  Connectivity conn;
-  double mean_edge = 1;
-  VisibilityHeuristic heuristic;
-  SolverTimings timings;
+// One triangulation the propagation can run on: the input's faces, or their intrinsic
+// Delaunay flip (same vertices, same surface, better-shaped triangles).
+struct Triangulation {
+  std::vector<Triangle> triangles;
+  std::vector<double> length;             // per halfedge, model units
+  std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
+  std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
 
   mutable std::once_flag float_once, double_once;
   mutable HalfedgeTables<float> tables_float;
@@ -37,39 +32,67 @@ struct GeodesicSolver::Impl {
 
   // Built on first use per precision (most callers only ever need one).
   template <class Real>
-  const HalfedgeTables<Real>& tables() const {
+  const HalfedgeTables<Real>& tables(double scale, const VisibilityHeuristic& heuristic,
+                                     const std::vector<std::uint8_t>& flat) const {
     if constexpr (std::is_same_v<Real, float>) {
       std::call_once(float_once, [&] {
-        tables_float = detail::build_halfedge_tables<float>(mesh, 1.0 / mean_edge, heuristic, flat);
+        tables_float = detail::build_halfedge_tables<float>(triangles, length, scale, heuristic, flat);
       });
       return tables_float;
     } else {
       std::call_once(double_once, [&] {
-        tables_double = detail::build_halfedge_tables<double>(mesh, 1.0 / mean_edge, heuristic, flat);
+        tables_double = detail::build_halfedge_tables<double>(triangles, length, scale, heuristic, flat);
       });
       return tables_double;
     }
   }
 
-  void build_ring();
-  void find_bridge_vertices();
-  // Bridge vertices and the ends of edges with more than two faces.
-  std::vector<Index> nonmanifold_vertices() const {
-    std::vector<Index> out = bridge_vertices;
-    for (Index e = 0; e < conn.num_edges(); ++e) {
-      const Index h = conn.edge_halfedge[e];
-      if (conn.ring_size(h) > 2) {
-        out.push_back(from_vertex(mesh, h));
-        out.push_back(to_vertex(mesh, h));
-      }
+  void set_direction_bits(const std::vector<Index>& plain_ring) {
+    auto dir = [&](Index h) {
+      return triangles[face_of(h)][corner_of(h)] < triangles[face_of(h)][corner_of(next_halfedge(h))];
+    };
+    ring.resize(plain_ring.size());
+    for (Index h = 0; h < Index(plain_ring.size()); ++h) {
+      const Index g = plain_ring[h];
+      ring[h] = g == h ? h : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0));
     }
-    return out;
   }
-  template <class Real>
-  GeodesicResult run(const std::vector<Source>& sources, const GeodesicOptions& options) const;
+
+  void build_corners(std::size_t num_vertices) {
+    corner_begin.assign(num_vertices + 1, 0);
+    for (const Triangle& t : triangles)
+      for (Index v : t) ++corner_begin[v + 1];
+    for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
+    corners.resize(3 * triangles.size());
+    std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
+    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles[face_of(c)][corner_of(c)]]++] = c;
+  }
 };
 
-void GeodesicSolver::Impl::build_ring() {
+struct GeodesicSolver::Impl {
+  Layout layout;
+  TriangleMesh mesh;               // reordered by the layout
+  Triangulation input;             // the (reordered) input faces
+  std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
+  std::size_t flips = 0;
+  std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
+  // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
+  // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
+  std::vector<Index> bridge_vertices;
+  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
+  double mean_edge = 1;
+  VisibilityHeuristic heuristic;
+  SolverTimings timings;
+
+  void build_input(const Connectivity& conn);
+  void find_bridge_vertices();
+  void build_delaunay();
+  template <class Real>
+  GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
+                     const GeodesicOptions& options) const;
+};
+
+void GeodesicSolver::Impl::build_input(const Connectivity& conn) {
   const std::size_t nh = conn.num_halfedges();
   if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^30 halfedges");
   skipped_face.assign(mesh.num_faces(), false);
@@ -77,11 +100,10 @@ void GeodesicSolver::Impl::build_ring() {
     const Triangle& t = mesh.triangles[f];
     skipped_face[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
   }
-  auto dir_bit = [&](Index h) { return from_vertex(mesh, h) < to_vertex(mesh, h); };
   // Every halfedge starts as a ring of its own (boundary, skipped face, loop), then the
   // members of each radial ring are linked without the skipped faces' halfedges.
-  ring.resize(nh);
-  for (Index h = 0; h < nh; ++h) ring[h] = h;
+  std::vector<Index> plain(nh);
+  for (Index h = 0; h < nh; ++h) plain[h] = h;
   std::vector<Index> members;
   for (Index e = 0; e < conn.num_edges(); ++e) {
     members.clear();
@@ -91,11 +113,31 @@ void GeodesicSolver::Impl::build_ring() {
       if (!skipped_face[face_of(h)]) members.push_back(h);
       h = conn.radial_next[h];
     } while (h != first);
-    for (std::size_t k = 0; k < members.size(); ++k) {
-      const Index a = members[k], b = members[(k + 1) % members.size()];
-      ring[a] = b | (dir_bit(b) ? detail::kRingNextDir : 0) | (dir_bit(a) ? detail::kRingSelfDir : 0);
-    }
+    for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
   }
+  input.triangles = mesh.triangles;
+  input.length = detail::halfedge_lengths(mesh);
+  input.set_direction_bits(plain);
+  input.corner_begin = conn.vertex_corner_begin;
+  input.corners = conn.vertex_corners;
+}
+
+void GeodesicSolver::Impl::build_delaunay() {
+  detail::IntrinsicTriangulation t;
+  t.triangles = input.triangles;
+  t.length = input.length;
+  t.skipped = skipped_face;
+  t.ring.resize(input.ring.size());
+  for (std::size_t h = 0; h < t.ring.size(); ++h) t.ring[h] = input.ring[h] & detail::kRingIndexMask;
+  // A generous cap: Delaunay flipping ends after finitely many flips, but float-stored slivers
+  // can make near-ties flip back and forth; the result is good long before the cap.
+  flips = detail::make_intrinsic_delaunay(t, 20 * t.length.size());
+  if (flips == 0) return;
+  delaunay = std::make_unique<Triangulation>();
+  delaunay->triangles = std::move(t.triangles);
+  delaunay->length = std::move(t.length);
+  delaunay->set_direction_bits(t.ring);
+  delaunay->build_corners(mesh.num_vertices());
 }
 
 void GeodesicSolver::Impl::find_bridge_vertices() {
@@ -109,8 +151,8 @@ void GeodesicSolver::Impl::find_bridge_vertices() {
   };
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
     faces.clear();
-    for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k)
-      if (!skipped_face[face_of(conn.vertex_corners[k])]) faces.push_back(conn.vertex_corners[k]);
+    for (Index k = input.corner_begin[v]; k < input.corner_begin[v + 1]; ++k)
+      if (!skipped_face[face_of(input.corners[k])]) faces.push_back(input.corners[k]);
     if (faces.size() < 2) continue;
     parent.resize(faces.size());
     for (Index i = 0; i < faces.size(); ++i) parent[i] = i;
@@ -118,7 +160,7 @@ void GeodesicSolver::Impl::find_bridge_vertices() {
     for (Index i = 0; i < faces.size(); ++i) {
       const Index c = faces[i];
       for (Index h : {c, prev_halfedge(c)}) {   // the two edges of this face through v
-        for (Index g = ring[h] & detail::kRingIndexMask; g != h; g = ring[g] & detail::kRingIndexMask) {
+        for (Index g = input.ring[h] & detail::kRingIndexMask; g != h; g = input.ring[g] & detail::kRingIndexMask) {
           const Index f = face_of(g);
           for (Index j = 0; j < faces.size(); ++j)
             if (face_of(faces[j]) == f) {
@@ -137,19 +179,27 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
   using Clock = std::chrono::steady_clock;
   validate(input);
   auto t0 = Clock::now();
-  impl_->heuristic = options.heuristic;
-  impl_->layout = options.optimize_layout ? compute_cache_layout(input) : identity_layout(input);
-  impl_->mesh = apply_layout(input, impl_->layout);
+  Impl& m = *impl_;
+  m.heuristic = options.heuristic;
+  m.layout = options.optimize_layout ? compute_cache_layout(input) : identity_layout(input);
+  m.mesh = apply_layout(input, m.layout);
   auto t1 = Clock::now();
-  impl_->conn = build_connectivity(impl_->mesh);
-  impl_->mean_edge = detail::mean_edge_length(impl_->mesh);
-  impl_->build_ring();
-  impl_->find_bridge_vertices();
-  impl_->flat = detail::flat_vertices(impl_->mesh, impl_->ring, impl_->skipped_face, impl_->nonmanifold_vertices());
-  impl_->tables<float>();
+  const Connectivity conn = build_connectivity(m.mesh);
+  m.mean_edge = detail::mean_edge_length(m.mesh);
+  m.build_input(conn);
+  m.find_bridge_vertices();
+  std::vector<Index> nonmanifold = m.bridge_vertices;   // plus the ends of edges with > 2 faces
+  for (Index e = 0; e < conn.num_edges(); ++e)
+    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
+      nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
+      nonmanifold.push_back(to_vertex(m.mesh, conn.edge_halfedge[e]));
+    }
+  m.flat = detail::flat_vertices(m.mesh, m.input.ring, m.skipped_face, nonmanifold);
+  if (options.intrinsic_delaunay) m.build_delaunay();
+  (m.delaunay ? *m.delaunay : m.input).tables<float>(1.0 / m.mean_edge, m.heuristic, m.flat);
   auto t2 = Clock::now();
-  impl_->timings.layout = std::chrono::duration<double>(t1 - t0).count();
-  impl_->timings.build = std::chrono::duration<double>(t2 - t1).count();
+  m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
+  m.timings.build = std::chrono::duration<double>(t2 - t1).count();
 }
 
 GeodesicSolver::~GeodesicSolver() = default;
@@ -158,6 +208,7 @@ GeodesicSolver& GeodesicSolver::operator=(GeodesicSolver&&) noexcept = default;
 
 const Layout& GeodesicSolver::layout() const { return impl_->layout; }
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
+std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   const std::size_t nf = impl_->mesh.num_faces();
@@ -166,7 +217,7 @@ std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   const std::size_t geometry =
       3 * nf * (single ? sizeof(detail::EdgeFrame<float>) + sizeof(detail::EdgeEntry<float>)
                        : sizeof(detail::EdgeFrame<double>) + sizeof(detail::EdgeEntry<double>));
-  return state + geometry + impl_->ring.size() * sizeof(Index);
+  return state + geometry + impl_->input.ring.size() * sizeof(Index);
 }
 
 GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
@@ -175,8 +226,14 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
     throw InvalidInput("strategy parameters f, f0, f1 must be positive");
   if (std::isnan(options.max_distance) || options.max_distance < 0)
     throw InvalidInput("max_distance must be >= 0");
-  if (options.precision == Precision::single) return impl_->run<float>(sources, options);
-  return impl_->run<double>(sources, options);
+  // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
+  // per-face virtual sources need the input faces.
+  bool vertex_sources_only = true;
+  for (const Source& s : sources) vertex_sources_only &= s.kind == Source::Kind::vertex;
+  const bool use_delaunay = impl_->delaunay && vertex_sources_only && !options.want_face_sources;
+  const Triangulation& tri = use_delaunay ? *impl_->delaunay : impl_->input;
+  if (options.precision == Precision::single) return impl_->run<float>(tri, sources, options);
+  return impl_->run<double>(tri, sources, options);
 }
 
 namespace {
@@ -184,10 +241,10 @@ namespace {
 // Seeds face f with a source at barycentric point b of the face (canonical coordinates are
 // exact for a point of the face itself); `offset` in normalised units.
 template <class Real>
-bool seed_face(const TriangleMesh& mesh, Index f, const double b[3], double scale, double offset,
+bool seed_face(const std::vector<double>& length, Index f, const double b[3], double scale, double offset,
                Index source, FaceState<Real>* state) {
   double p[3][2];
-  detail::canonical_corners(mesh, f, scale, p);
+  detail::canonical_corners(length, f, scale, p);
   const double sx = b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0];
   const double sy = b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1];
   const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
@@ -210,9 +267,10 @@ Real corner_distance(const HalfedgeTables<Real>& tab, const FaceState<Real>& st,
 }
 
 template <class Real>
-GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
+GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::vector<Source>& sources,
                                          const GeodesicOptions& options) const {
-  const HalfedgeTables<Real>& tab = tables<Real>();
+  const HalfedgeTables<Real>& tab = tri.tables<Real>(1.0 / mean_edge, heuristic, flat);
+  const std::vector<double>& length = tri.length;
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
@@ -241,11 +299,11 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
         source_vertex_value[v] = src.offset;
         source_vertex_label[v] = label;
       }
-      for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
-        const Index c = conn.vertex_corners[k];
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
         const Index f = face_of(c);
         if (skipped_face[f]) continue;
-        if (seed_face(mesh, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state.data()))
+        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state.data()))
           queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
       }
     } else {
@@ -260,7 +318,7 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
       const Index f = layout.face_rank[src.element];
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
       const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
-      if (seed_face(mesh, f, w, scale, src.offset * scale, label, state.data()))
+      if (seed_face(length, f, w, scale, src.offset * scale, label, state.data()))
         for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
     }
   }
@@ -268,7 +326,7 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
   result.stats.enqueued = queue.size();
 
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
-  detail::UpdateStep<Real> step(tab, ring.data(), state.data(), limit, result.stats);
+  detail::UpdateStep<Real> step(tab, tri.ring.data(), state.data(), limit, result.stats);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   auto propagate = [&] {
     using detail::Postpone;
@@ -298,20 +356,20 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
     for (Index v : bridge_vertices) {
       Real best = inf;
       Index label = kInvalidIndex;
-      for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
-        const Index c = conn.vertex_corners[k];
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
         const FaceState<Real>& st = state[face_of(c)];
         if (st.source == kInvalidIndex) continue;
         const Real d = corner_distance(tab, st, c);
         if (d < best) best = d, label = st.source;
       }
       if (!(best <= limit)) continue;
-      for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
-        const Index c = conn.vertex_corners[k];
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
         const Index fc = face_of(c);
         if (skipped_face[fc]) continue;
         const FaceState<Real> before = state[fc];
-        if (seed_face(mesh, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state.data()) &&
+        if (seed_face(length, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state.data()) &&
             state[fc].dT + state[fc].dT * std::numeric_limits<Real>::epsilon() * 4 < before.dT) {
           queue.push_back({next_halfedge(c), state[fc].dT});
           changed = true;
@@ -330,7 +388,7 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
     const FaceState<Real>& st = state[fi];
     if (st.source == kInvalidIndex) continue;
     ++result.stats.faces_reached;
-    const Triangle& t = mesh.triangles[fi];
+    const Triangle& t = tri.triangles[fi];
     for (int i = 0; i < 3; ++i) {
       const double d = double(corner_distance(tab, st, Index(3 * fi + i))) * mean_edge;
       if (d < vdist[t[i]]) {
@@ -350,12 +408,28 @@ GeodesicResult GeodesicSolver::Impl::run(const std::vector<Source>& sources,
   }
   result.face_distance.resize(nf);
   result.face_source.resize(nf);
-  for (std::size_t fi = 0; fi < nf; ++fi) {
-    const Index in = layout.face_order[fi];
-    const FaceState<Real>& st = state[fi];
-    result.face_distance[in] = st.source == kInvalidIndex ? std::numeric_limits<double>::infinity()
-                                                          : double(st.dT) * mean_edge;
-    result.face_source[in] = st.source;
+  if (&tri == &input) {
+    for (std::size_t fi = 0; fi < nf; ++fi) {
+      const Index in = layout.face_order[fi];
+      const FaceState<Real>& st = state[fi];
+      result.face_distance[in] = st.source == kInvalidIndex ? std::numeric_limits<double>::infinity()
+                                                            : double(st.dT) * mean_edge;
+      result.face_source[in] = st.source;
+    }
+  } else {
+    // The propagation ran on other faces: an input face gets the mean of its corners'
+    // distances and the label of its nearest corner.
+    for (std::size_t fi = 0; fi < nf; ++fi) {
+      const Triangle& t = mesh.triangles[fi];
+      const Index in = layout.face_order[fi];
+      int best = 0;
+      for (int i = 1; i < 3; ++i)
+        if (vdist[t[i]] < vdist[t[best]]) best = i;
+      const double mean = (vdist[t[0]] + vdist[t[1]] + vdist[t[2]]) / 3;
+      const bool reached = std::isfinite(mean) && mean <= cutoff;
+      result.face_distance[in] = reached ? mean : std::numeric_limits<double>::infinity();
+      result.face_source[in] = reached ? vlabel[t[best]] : kInvalidIndex;
+    }
   }
   if (options.want_face_sources) {
     result.face_sources.resize(nf);

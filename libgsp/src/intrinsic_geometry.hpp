@@ -37,7 +37,7 @@ struct HalfedgeTables {
 };
 
 // Per vertex: true where no shortest path can bend — interior vertices whose angle sum is 2 pi
-// and boundary vertices whose angle sum is at most pi (within a relative 1e-4). Unfolding
+// and boundary vertices whose angle sum is at most pi (within a relative 1e-6). Unfolding
 // around such a vertex is the same from either side, so a source that the visibility probe
 // sees past the vertex is still exact when carried straight on. This makes GSP exact on flat
 // and developable regions (planar CAD faces, fans) whatever the heuristic says.
@@ -46,13 +46,19 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vec
                                         const std::vector<Index>& nonmanifold_vertices);
 
 // Builds the tables for every halfedge of `mesh` (edge lengths scaled by `scale`).
+// `length` holds, per halfedge 3f+i, the length from corner i to corner i+1 (model units):
+// the geometry is intrinsic, the 3D positions are not needed.
 template <class Real>
-HalfedgeTables<Real> build_halfedge_tables(const TriangleMesh& mesh, double scale,
+HalfedgeTables<Real> build_halfedge_tables(const std::vector<Triangle>& triangles,
+                                           const std::vector<double>& length, double scale,
                                            const VisibilityHeuristic& heuristic,
                                            const std::vector<std::uint8_t>& flat);
 
 // Corner positions of face f in its canonical frame (scaled lengths), in double.
-void canonical_corners(const TriangleMesh& mesh, Index f, double scale, double out[3][2]);
+void canonical_corners(const std::vector<double>& length, Index f, double scale, double out[3][2]);
+
+// Per halfedge, the 3D length of its edge.
+std::vector<double> halfedge_lengths(const TriangleMesh& mesh);
 
 // Mean length over the halfedges of faces with three distinct corners (each interior edge
 // counted from both sides, which weights it like the faces see it). 1 if there is none.

@@ -83,8 +83,11 @@ struct PropagationStats {
 struct GeodesicResult {
   std::vector<double> vertex_distance;     // per input vertex; +inf where unreachable
   std::vector<Index> vertex_source;        // per input vertex: nearest source, kInvalidIndex if none
-  std::vector<double> face_distance;       // per input face: distance at its centroid, +inf if unreached
-  std::vector<Index> face_source;          // per input face: source index (geodesic Voronoi label)
+  // Per input face: distance at its centroid and source index (geodesic Voronoi label); +inf /
+  // kInvalidIndex if unreached. When the run used the intrinsic Delaunay faces, the mean of
+  // the corner distances and the nearest corner's label.
+  std::vector<double> face_distance;
+  std::vector<Index> face_source;
   std::vector<VirtualSource> face_sources; // per input face, when options.want_face_sources
   PropagationStats stats;
 
@@ -101,6 +104,11 @@ struct SolverTimings {
 
 struct SolverOptions {
   bool optimize_layout = true;   // reorder with compute_cache_layout (results keep input order)
+  // Propagate on the intrinsic Delaunay triangulation of the mesh (edge flips that keep the
+  // surface exactly; same vertices): slivers and fans of CAD meshes become well-shaped
+  // triangles. Used for vertex sources; face-point sources and per-face virtual sources use
+  // the input faces. See docs/gsp-core.md.
+  bool intrinsic_delaunay = true;
   VisibilityHeuristic heuristic = VisibilityHeuristic::published();
 };
 
@@ -119,6 +127,7 @@ class GeodesicSolver {
 
   const Layout& layout() const;
   const SolverTimings& timings() const;
+  std::size_t intrinsic_flips() const;   // edges flipped to make the intrinsic Delaunay triangulation
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
 
  private:
