@@ -93,13 +93,14 @@ std::string percent(double fraction) {
 // One Markdown row per mesh and a mean row per group; cells are MRE (signed mean in brackets).
 void print_table(std::ostream& os, const std::vector<std::pair<std::string, const std::vector<TrainingMesh>*>>& groups,
                  const std::vector<std::string>& names) {
+  // Resolve every name first: a typo must fail before anything is printed.
+  std::vector<VisibilityHeuristic> heuristics;
+  for (const std::string& n : names) heuristics.push_back(n == "dijkstra" ? VisibilityHeuristic{} : named_heuristic(n));
   os << "| mesh | set | vertices | sources |";
   for (const std::string& n : names) os << ' ' << n << " |";
   os << "\n|---|---|---:|---:|";
   for (std::size_t i = 0; i < names.size(); ++i) os << "---:|";
   os << '\n';
-  std::vector<VisibilityHeuristic> heuristics;
-  for (const std::string& n : names) heuristics.push_back(n == "dijkstra" ? VisibilityHeuristic{} : named_heuristic(n));
   for (const auto& [label, meshes] : groups) {
     if (meshes->empty()) continue;
     std::vector<double> sum(names.size(), 0.0);
@@ -133,7 +134,9 @@ void run(gsp::cli::Context& ctx, const Options& opt) {
 
   if (opt.evaluate) {
     auto t = ctx.timer().scope("evaluate");
-    print_table(std::cout, {{"train", &train}, {"held-out", &held_out}}, split_list(opt.heuristics));
+    // With "--stats -" stdout carries only the JSON: the table then goes to stderr.
+    print_table(ctx.stats_to_stdout() ? std::cerr : std::cout, {{"train", &train}, {"held-out", &held_out}},
+                split_list(opt.heuristics));
     return;
   }
 
@@ -172,7 +175,7 @@ void run(gsp::cli::Context& ctx, const Options& opt) {
     f.write(text.data(), text.size());
     f.commit();
   }
-  std::cout << numbers << '\n';
+  if (!ctx.stats_to_stdout()) std::cout << numbers << '\n';   // else it is in the JSON's "result"
   ctx.note("training objective (" + opt.aggregate + " MRE) " + percent(r.start_value) + " -> " + percent(r.best_value) + " (" +
            std::to_string(r.improvements) + " improvements)");
   if (!held_out.empty()) ctx.note("held-out objective " + percent(val_start) + " -> " + percent(val_best));
@@ -198,7 +201,7 @@ int main(int argc, char** argv) {
         app.add_option("--sources", opt.sources, "random source vertices per mesh")->check(CLI::Range(1, 1000))->capture_default_str();
         app.add_option("--seed", opt.seed, "seed for the sources and the evolution strategy")->capture_default_str();
         app.add_option("--iterations", opt.iterations, "children the evolution strategy evaluates")->check(CLI::Range(0, 10000000))->capture_default_str();
-        app.add_option("--sigma", opt.sigma, "initial mutation step (lambda units)")->check(CLI::Range(1e-6, 1.0))->capture_default_str();
+        app.add_option("--sigma", opt.sigma, "initial mutation step (lambda units; log units for thresholds)")->check(CLI::Range(1e-6, 1.0))->capture_default_str();
         app.add_option("--cache", opt.cache, "folder for exact distances (keyed by mesh content and source)");
         app.add_option("--start", opt.start, "starting point: published, centroid, corner, trained or a file")->capture_default_str();
         app.add_option("--out", opt.out, "write the trained 20 numbers here (VisibilityHeuristic::to_string)");
