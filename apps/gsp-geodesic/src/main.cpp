@@ -80,6 +80,7 @@ void run(cli::Context& ctx, const Options& o) {
   } else {
     SolverOptions so;
     so.optimize_layout = !o.no_layout;
+    so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     GeodesicSolver solver(in.mesh, so);
     ctx.timer().add("layout", solver.timings().layout);
@@ -95,6 +96,8 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["heuristic"] = o.heuristic;
     ctx.settings()["step"] = o.f;
     ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";
+    ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
+    ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
     ctx.stats()["memory"]["state_bytes_per_vertex"] =
         in.mesh.num_vertices() ? double(solver.state_bytes(precision)) / double(in.mesh.num_vertices()) : 0.0;
   }

@@ -38,6 +38,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--step", o.f, "dual-queue step f in mean edge lengths (default 1)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--no-layout", o.no_layout, "keep the input's memory layout (no cache reordering)");
+  app.add_flag("--input-faces", o.input_faces,
+               "propagate on the input's triangles, not on their intrinsic Delaunay flip");
   app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
   app.add_option("--png", o.png, "also write a preview picture: the field with iso-lines, sources in red")

@@ -24,6 +24,7 @@ struct Options {
   std::string heuristic = "published";        // published | centroid | opposite-corner | FILE
   double f = 1.0;
   bool no_layout = false;
+  bool input_faces = false;
   bool ascii = false;
   bool labels = false;
   std::string png;                            // preview picture, empty: none
