@@ -4,6 +4,7 @@
 #include "test_data.hpp"
 
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/render/image.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -387,3 +388,27 @@ TEST_F(GspInfo, StlConversionIsWeldedByDefault) {
 }
 
 }  // namespace
+
+// --png: a picture of the mesh (grey surface, dark edges) on a white background.
+TEST_F(GspInfo, PngPreview) {
+  ScratchDir dir("info");
+  const std::filesystem::path png = dir / "mesh.png";
+  const auto r = run(quote(kInfo) + " --png " + quote(png.string()) + " " +
+                         quote(gsp::test::shared_mesh("fertility.off")), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const gsp::render::Image image = gsp::render::read_png(png.string());
+  EXPECT_EQ(image.width, 800);
+  std::size_t background = 0, dark = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto p = image.pixel(x, y);
+      if (p[0] == 255 && p[1] == 255 && p[2] == 255) ++background;
+      else if (p[0] < 80) ++dark;
+    }
+  const double n = double(image.width) * image.height;
+  EXPECT_GT(background / n, 0.3);   // the mesh is framed, not filling the picture
+  EXPECT_LT(background / n, 0.9);
+  EXPECT_GT(dark, 1000u);           // the wireframe
+  EXPECT_EQ(run(quote(kInfo) + " --png " + quote((dir / "mesh.jpg").string()) + " " +
+                    quote(gsp::test::shared_mesh("fertility.off")), dir).exit_code, 2);
+}
