@@ -1,3 +1,4 @@
+#include "intrinsic_geometry.hpp"
 #include "propagation.hpp"
 #include "virtual_source.hpp"
 #include "intrinsic_delaunay.hpp"
@@ -14,8 +15,7 @@
 
 namespace gsp {
 
-using detail::FaceState;
-using detail::HalfedgeTables;
+using detail::FaceRecord;
 using detail::QueueEntry;
 
 // One triangulation the propagation can run on: the input's faces, or their intrinsic
@@ -27,23 +27,31 @@ struct Triangulation {
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
 
   mutable std::once_flag float_once, double_once;
-  mutable HalfedgeTables<float> tables_float;
-  mutable HalfedgeTables<double> tables_double;
+  mutable std::vector<FaceRecord<float>> records_float;
+  mutable std::vector<FaceRecord<double>> records_double;
 
-  // Built on first use per precision (most callers only ever need one).
+  // The per-face records every query starts from (lengths, flat corners, nothing reached),
+  // built on first use per precision.
   template <class Real>
-  const HalfedgeTables<Real>& tables(double scale, const VisibilityHeuristic& heuristic,
-                                     const std::vector<std::uint8_t>& flat) const {
+  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& flat) const {
+    auto build = [&] {
+      const Real inf = std::numeric_limits<Real>::infinity();
+      std::vector<FaceRecord<Real>> r(triangles.size());
+      for (std::size_t f = 0; f < triangles.size(); ++f) {
+        Index tag = detail::kNoSource;
+        for (Index i = 0; i < 3; ++i)
+          if (flat[triangles[f][i]]) tag |= detail::kFlatCorner0 << i;
+        r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
+                                 Real(scale * length[3 * f + 2])}, tag};
+      }
+      return r;
+    };
     if constexpr (std::is_same_v<Real, float>) {
-      std::call_once(float_once, [&] {
-        tables_float = detail::build_halfedge_tables<float>(triangles, length, scale, heuristic, flat);
-      });
-      return tables_float;
+      std::call_once(float_once, [&] { records_float = build(); });
+      return records_float;
     } else {
-      std::call_once(double_once, [&] {
-        tables_double = detail::build_halfedge_tables<double>(triangles, length, scale, heuristic, flat);
-      });
-      return tables_double;
+      std::call_once(double_once, [&] { records_double = build(); });
+      return records_double;
     }
   }
 
@@ -196,7 +204,7 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
     }
   m.flat = detail::flat_vertices(m.mesh, m.input.ring, m.skipped_face, nonmanifold);
   if (options.intrinsic_delaunay) m.build_delaunay();
-  (m.delaunay ? *m.delaunay : m.input).tables<float>(1.0 / m.mean_edge, m.heuristic, m.flat);
+  (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.flat);
   auto t2 = Clock::now();
   m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
   m.timings.build = std::chrono::duration<double>(t2 - t1).count();
@@ -211,13 +219,10 @@ const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
+  // Per face one record (source, distances, edge lengths); per halfedge one radial link.
   const std::size_t nf = impl_->mesh.num_faces();
-  const bool single = precision == Precision::single;
-  const std::size_t state = nf * (single ? sizeof(FaceState<float>) : sizeof(FaceState<double>));
-  const std::size_t geometry =
-      3 * nf * (single ? sizeof(detail::EdgeFrame<float>) + sizeof(detail::EdgeEntry<float>)
-                       : sizeof(detail::EdgeFrame<double>) + sizeof(detail::EdgeEntry<double>));
-  return state + geometry + impl_->input.ring.size() * sizeof(Index);
+  const std::size_t record = precision == Precision::single ? sizeof(FaceRecord<float>) : sizeof(FaceRecord<double>);
+  return nf * record + impl_->input.ring.size() * sizeof(Index);
 }
 
 GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
@@ -242,16 +247,17 @@ namespace {
 // exact for a point of the face itself); `offset` in normalised units.
 template <class Real>
 bool seed_face(const std::vector<double>& length, Index f, const double b[3], double scale, double offset,
-               Index source, FaceState<Real>* state) {
+               Index source, FaceRecord<Real>* faces) {
   double p[3][2];
   detail::canonical_corners(length, f, scale, p);
   const double sx = b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0];
   const double sy = b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1];
   const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
   const Real dT = Real(offset + std::hypot(gx - sx, gy - sy));
-  FaceState<Real>& st = state[f];
-  if (!(dT < st.dT)) return false;
-  st = FaceState<Real>{Real(sx), Real(sy), Real(offset), dT, source};
+  FaceRecord<Real>& r = faces[f];
+  if (!(dT < r.dT)) return false;
+  r.sx = Real(sx), r.sy = Real(sy), r.sigma = Real(offset), r.dT = dT;
+  r.tag = (r.tag & ~detail::kSourceMask) | source;
   return true;
 }
 
@@ -261,20 +267,22 @@ const double kCornerWeights[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
 
 // Distance of corner c's vertex through its face's virtual source (normalised units).
 template <class Real>
-Real corner_distance(const HalfedgeTables<Real>& tab, const FaceState<Real>& st, Index c) {
-  const detail::EdgeFrame<Real>& fr = tab.frame[c];   // the edge frame of halfedge c starts at corner c
-  return st.sigma + std::sqrt((st.sx - fr.ax) * (st.sx - fr.ax) + (st.sy - fr.ay) * (st.sy - fr.ay));
+Real corner_distance(const FaceRecord<Real>& r, Index corner) {
+  Real x = 0, y = 0;
+  if (corner == 1) x = r.len[0];
+  if (corner == 2) detail::canonical_corner2(r.len, x, y);
+  return r.sigma + std::sqrt((r.sx - x) * (r.sx - x) + (r.sy - y) * (r.sy - y));
 }
 
 template <class Real>
 GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::vector<Source>& sources,
                                          const GeodesicOptions& options) const {
-  const HalfedgeTables<Real>& tab = tri.tables<Real>(1.0 / mean_edge, heuristic, flat);
   const std::vector<double>& length = tri.length;
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
-  std::vector<FaceState<Real>> state(nf, FaceState<Real>{0, 0, inf, inf, kInvalidIndex});
+  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^29 - 1)");
+  std::vector<FaceRecord<Real>> state = tri.records<Real>(scale, flat);   // this query's copy
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
@@ -326,7 +334,8 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   result.stats.enqueued = queue.size();
 
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
-  detail::UpdateStep<Real> step(tab, tri.ring.data(), state.data(), limit, result.stats);
+  detail::UpdateStep<Real> step(state.data(), tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit,
+                                result.stats);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   auto propagate = [&] {
     using detail::Postpone;
@@ -358,17 +367,17 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
       Index label = kInvalidIndex;
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
         const Index c = tri.corners[k];
-        const FaceState<Real>& st = state[face_of(c)];
-        if (st.source == kInvalidIndex) continue;
-        const Real d = corner_distance(tab, st, c);
-        if (d < best) best = d, label = st.source;
+        const FaceRecord<Real>& st = state[face_of(c)];
+        if (!st.reached()) continue;
+        const Real d = corner_distance(st, corner_of(c));
+        if (d < best) best = d, label = st.source();
       }
       if (!(best <= limit)) continue;
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
         const Index c = tri.corners[k];
         const Index fc = face_of(c);
         if (skipped_face[fc]) continue;
-        const FaceState<Real> before = state[fc];
+        const FaceRecord<Real> before = state[fc];
         if (seed_face(length, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state.data()) &&
             state[fc].dT + state[fc].dT * std::numeric_limits<Real>::epsilon() * 4 < before.dT) {
           queue.push_back({next_halfedge(c), state[fc].dT});
@@ -385,15 +394,15 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<double> vdist(source_vertex_value);
   std::vector<Index> vlabel(source_vertex_label);
   for (std::size_t fi = 0; fi < nf; ++fi) {
-    const FaceState<Real>& st = state[fi];
-    if (st.source == kInvalidIndex) continue;
+    const FaceRecord<Real>& st = state[fi];
+    if (!st.reached()) continue;
     ++result.stats.faces_reached;
     const Triangle& t = tri.triangles[fi];
-    for (int i = 0; i < 3; ++i) {
-      const double d = double(corner_distance(tab, st, Index(3 * fi + i))) * mean_edge;
+    for (Index i = 0; i < 3; ++i) {
+      const double d = double(corner_distance(st, i)) * mean_edge;
       if (d < vdist[t[i]]) {
         vdist[t[i]] = d;
-        vlabel[t[i]] = st.source;
+        vlabel[t[i]] = st.source();
       }
     }
   }
@@ -411,10 +420,9 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   if (&tri == &input) {
     for (std::size_t fi = 0; fi < nf; ++fi) {
       const Index in = layout.face_order[fi];
-      const FaceState<Real>& st = state[fi];
-      result.face_distance[in] = st.source == kInvalidIndex ? std::numeric_limits<double>::infinity()
-                                                            : double(st.dT) * mean_edge;
-      result.face_source[in] = st.source;
+      const FaceRecord<Real>& st = state[fi];
+      result.face_distance[in] = st.reached() ? double(st.dT) * mean_edge : std::numeric_limits<double>::infinity();
+      result.face_source[in] = st.reached() ? st.source() : kInvalidIndex;
     }
   } else {
     // The propagation ran on other faces: an input face gets the mean of its corners'
@@ -434,12 +442,12 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   if (options.want_face_sources) {
     result.face_sources.resize(nf);
     for (std::size_t fi = 0; fi < nf; ++fi) {
-      const FaceState<Real>& st = state[fi];
-      if (st.source == kInvalidIndex) continue;
+      const FaceRecord<Real>& st = state[fi];
+      if (!st.reached()) continue;
       VirtualSource& vs = result.face_sources[layout.face_order[fi]];
       vs.position = detail::canonical_to_3d(mesh, Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
       vs.sigma = double(st.sigma) * mean_edge;
-      vs.source = st.source;
+      vs.source = st.source();
     }
   }
   return result;

@@ -37,66 +37,6 @@ void canonical_corners(const std::vector<double>& length, Index f, double scale,
   }
 }
 
-template <class Real>
-HalfedgeTables<Real> build_halfedge_tables(const std::vector<Triangle>& triangles,
-                                           const std::vector<double>& length, double scale,
-                                           const VisibilityHeuristic& heuristic,
-                                           const std::vector<std::uint8_t>& flat) {
-  HalfedgeTables<Real> tables;
-  tables.frame.resize(3 * triangles.size());
-  tables.entry.resize(3 * triangles.size());
-  for (std::size_t f = 0; f < triangles.size(); ++f) {
-    double p[3][2];
-    canonical_corners(length, Index(f), scale, p);
-    const Triangle& t = triangles[f];
-    double len[3];
-    for (int i = 0; i < 3; ++i)
-      len[i] = std::hypot(p[(i + 1) % 3][0] - p[i][0], p[(i + 1) % 3][1] - p[i][1]);
-    const double max_e = std::max({len[0], len[1], len[2]});
-    const double min_e = std::min({len[0], len[1], len[2]});
-    const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
-    for (int j = 0; j < 3; ++j) {
-      const double* a = p[j];
-      const double* b = p[(j + 1) % 3];
-      const double* q = p[(j + 2) % 3];
-      const double e1 = len[j];
-      double c = 1, s = 0;
-      if (e1 > 0) c = (b[0] - a[0]) / e1, s = (b[1] - a[1]) / e1;
-      auto to_edge = [&](double x, double y, double& ex, double& ey) {
-        ex = c * (x - a[0]) + s * (y - a[1]);
-        ey = -s * (x - a[0]) + c * (y - a[1]);
-      };
-      double px, py, cx, cy;
-      to_edge(q[0], q[1], px, py);
-      to_edge(gx, gy, cx, cy);
-      py = std::max(0.0, py), cy = std::max(0.0, cy);
-      double qx, qy;
-      if (e1 > 0) {
-        const double lambda = heuristic.blend(e1, max_e, min_e, py);
-        qx = (1 - lambda) * px + lambda * cx;
-        qy = (1 - lambda) * py + lambda * cy;
-      } else {
-        // A and B coincide: the source is seen through a point. A probe left of A with qy = 0
-        // makes the crossing test bend at A unless the source sits on A itself.
-        qx = -1, qy = 0;
-      }
-      tables.frame[3 * f + j] = {Real(a[0]), Real(a[1]), Real(c), Real(s)};
-      tables.entry[3 * f + j] = {Real(e1), Real(cx), Real(cy), Real(qx), Real(qy),
-                                 (flat[t[j]] ? 1u : 0u) | (flat[t[(j + 1) % 3]] ? 2u : 0u)};
-    }
-  }
-  return tables;
-}
-
-template HalfedgeTables<float> build_halfedge_tables<float>(const std::vector<Triangle>&,
-                                                            const std::vector<double>&, double,
-                                                            const VisibilityHeuristic&,
-                                                            const std::vector<std::uint8_t>&);
-template HalfedgeTables<double> build_halfedge_tables<double>(const std::vector<Triangle>&,
-                                                              const std::vector<double>&, double,
-                                                              const VisibilityHeuristic&,
-                                                              const std::vector<std::uint8_t>&);
-
 std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vector<Index>& ring,
                                         const std::vector<bool>& skipped_face,
                                         const std::vector<Index>& nonmanifold_vertices) {

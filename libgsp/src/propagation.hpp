@@ -1,13 +1,15 @@
 #pragma once
-// The GSP update step (paper Section 4.1, in canonical face coordinates: see intrinsic_geometry.hpp) and the queue strategies that drive it (Section 4.2).
+// The GSP update step (paper Section 4.1, in canonical face coordinates: see face_record.hpp)
+// and the queue strategies that drive it (Section 4.2).
 // Internal header: templated on the scalar type, instantiated for float and double in
 // geodesic_solver.cpp. The hot loop allocates nothing and calls nothing virtual.
-#include "intrinsic_geometry.hpp"
+#include "face_record.hpp"
 
 #include <gsp/geodesics.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <queue>
@@ -22,14 +24,6 @@ inline constexpr Index kRingIndexMask = 0x3fffffffu;
 inline constexpr Index kRingNextDir = 0x80000000u;
 inline constexpr Index kRingSelfDir = 0x40000000u;
 
-template <class Real>
-struct FaceState {
-  Real sx, sy;    // the virtual source, in the face's canonical frame
-  Real sigma;     // path length behind the virtual source
-  Real dT;        // distance of the centroid (the key of every comparison)
-  Index source;   // which input source this face's path comes from
-};
-
 // A lean-queue entry: the halfedge of the face to propagate from, and that face's d_T when
 // queued, so entries overtaken by a later update of the face are recognised and skipped.
 template <class Real>
@@ -41,54 +35,64 @@ struct QueueEntry {
 template <class Real>
 class UpdateStep {
  public:
-  UpdateStep(const HalfedgeTables<Real>& tables, const Index* ring, FaceState<Real>* state,
-             Real expand_limit, PropagationStats& stats)
-      : frame_(tables.frame.data()), entry_(tables.entry.data()), ring_(ring), state_(state),
-        limit_(expand_limit), stats_(stats) {}
+  UpdateStep(FaceRecord<Real>* faces, const Index* ring, const ProbeTable<Real>& probe, Real expand_limit,
+             PropagationStats& stats)
+      : faces_(faces), ring_(ring), probe_(probe), limit_(expand_limit), stats_(stats) {}
 
-  bool is_stale(const QueueEntry<Real>& e) const { return state_[face_of(e.halfedge)].dT < e.dT; }
+  bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
   // Propagates the virtual source of the entry's face over its halfedge into every other face
   // of the edge's radial ring; push(entry) receives the entries of each improved face.
   template <class Push>
   void expand(const QueueEntry<Real>& entry, Push&& push) {
     const Index h = entry.halfedge;
-    const FaceState<Real>& su = state_[face_of(h)];
-    if (su.dT < entry.dT) {
+    const FaceRecord<Real>& u = faces_[face_of(h)];
+    if (u.dT < entry.dT) {
       ++stats_.stale_skipped;
       return;
     }
     // The source in h's edge frame: U lies on the +y side, so a source "behind" h has y >= 0.
-    const EdgeFrame<Real>& fh = frame_[h];
-    const Real ux = su.sx - fh.ax, uy = su.sy - fh.ay;
-    const Real hx = fh.c * ux + fh.s * uy;
-    const Real hy = fh.c * uy - fh.s * ux;
-    const Real sigma = su.sigma;
-    const Index source = su.source;
-    const Real e1h = entry_[h].e1;
+    const EdgeView<Real> vu = edge_view(u.len, corner_of(h));
+    Real hx, hy;
+    canonical_frame(u.len, corner_of(h), vu).to_edge(u.sx, u.sy, hx, hy);
+    const Real sigma = u.sigma;
+    const Index source = u.source();
+    const Real e1h = vu.e1;
 
+    std::uint64_t steps = 0;
     Index link = ring_[h];
     const bool h_dir = (link & kRingSelfDir) != 0;
     for (Index g = link & kRingIndexMask; g != h; link = ring_[g], g = link & kRingIndexMask) {
-      ++stats_.update_steps;
-      const EdgeEntry<Real>& G = entry_[g];
-      const Real e1 = G.e1;
-      // Unfold into g's frame (T on +y): y flips; x runs from the other end unless the two
-      // faces disagree in orientation and walk the edge the same way.
+      ++steps;
+      FaceRecord<Real>& t = faces_[face_of(g)];
+      const Index cj = corner_of(g);
+      const EdgeView<Real> v = edge_view(t.len, cj);
+      const Real e1 = v.e1;
+      // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
+      // two faces disagree in orientation and walk the edge the same way.
       const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
       const Real sx = same_dir ? hx : e1h - hx;
       const Real sy = -hy;   // <= 0: the source lies on U's side, as it should
-      const Real cx = G.cx, cy = G.cy;
+      const Real cx = (v.px + e1) * Real(1.0 / 3.0);
+      const Real cy = v.py * Real(1.0 / 3.0);
 
       int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
       if (sy <= 0) {
-        // Does the segment probe -> source cross AB? Division-free form of the paper's
+        // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
+        // (lambda 1); a zero-length edge is seen through its single point.
+        Real qx = -1, qy = 0;
+        if (e1 > 0) {
+          const Real lambda = probe_.blend(t.len, e1, v.py);
+          qx = v.px + lambda * (cx - v.px);
+          qy = v.py + lambda * (cy - v.py);
+        }
+        // Does the segment Q -> S cross AB? Division-free form of the paper's
         // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
-        const Real t = G.qx * -sy + sx * G.qy;
-        kind = t < 0 ? 1 : (t > e1 * (G.qy - sy) ? 2 : 0);
+        const Real tq = qx * -sy + sx * qy;
+        kind = tq < 0 ? 1 : (tq > e1 * (qy - sy) ? 2 : 0);
         // Around a flat vertex every unfolding agrees and no geodesic turns: the probe's verdict
         // only matters where the vertex could be a corner.
-        if (kind != 0 && (G.straight_at & unsigned(kind))) kind = 0;
+        if (kind != 0 && t.flat_corner(kind == 1 ? cj : (cj == 2 ? 0 : cj + 1))) kind = 0;
       } else {
         // The source lies on T's side of the edge (the paper's same-side case): no straight
         // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
@@ -115,29 +119,26 @@ class UpdateStep {
         ex = e1, ey = 0;
       }
 
-      FaceState<Real>& st = state_[face_of(g)];
       // Only a clearly shorter path counts: an improvement lost in rounding would bounce
       // between faces forever.
-      if (!(new_dT + new_dT * kRelativeImprovement < st.dT)) continue;
+      if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) continue;
       ++stats_.face_updates;
-      const EdgeFrame<Real>& fg = frame_[g];
-      st.sx = fg.ax + fg.c * ex - fg.s * ey;
-      st.sy = fg.ay + fg.s * ex + fg.c * ey;
-      st.sigma = new_sigma;
-      st.dT = new_dT;
-      st.source = source;
+      canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
+      t.sigma = new_sigma;
+      t.dT = new_dT;
+      t.tag = (t.tag & ~kSourceMask) | source;
       if (!(new_dT <= limit_)) continue;   // max-distance: stored, not expanded
       push(QueueEntry<Real>{next_halfedge(g), new_dT});
       push(QueueEntry<Real>{prev_halfedge(g), new_dT});
     }
+    stats_.update_steps += steps;
   }
 
  private:
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
-  const EdgeFrame<Real>* frame_;
-  const EdgeEntry<Real>* entry_;
+  FaceRecord<Real>* faces_;
   const Index* ring_;
-  FaceState<Real>* state_;
+  ProbeTable<Real> probe_;
   Real limit_;
   PropagationStats& stats_;
 };
