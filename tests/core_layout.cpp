@@ -154,13 +154,16 @@ TEST(CoreLayout, ClusteringIsMoreLocalThanInputAndShuffle) {
 }
 
 TEST(CoreLayout, GridLayoutIsHierarchical) {
-  // On a 128 x 128-vertex grid (n = 127, a power of two per side) the clustering reproduces the
-  // Z-order curve's figures: mean gap 85.9 (equal to the rows'), log gap 3.09 against 5.01.
+  // On a 128 x 128-vertex grid (n = 127, a power of two per side) the clustering alone
+  // reproduces the Z-order curve's figures (mean gap 85.9, equal to the rows', log gap 3.09
+  // against 5.01); turning clusters to face their neighbours lowers the log gap to 3.05 at a
+  // mean gap within 1% of the rows'.
   const TriangleMesh m = test::grid(127);
   const TriangleMesh optimised = apply_layout(m, compute_cache_layout(m));
   EXPECT_NEAR(mean_log_neighbour_index_distance(m), 5.01, 0.01);
-  EXPECT_NEAR(mean_log_neighbour_index_distance(optimised), 3.09, 0.01);
-  EXPECT_NEAR(mean_neighbour_index_distance(optimised), mean_neighbour_index_distance(m), 0.1);
+  EXPECT_LE(mean_log_neighbour_index_distance(optimised), 3.09);
+  EXPECT_NEAR(mean_neighbour_index_distance(optimised), mean_neighbour_index_distance(m),
+              0.01 * mean_neighbour_index_distance(m));
 }
 
 TEST(CoreLayout, LayoutOfAShuffledGridRecoversLocality) {

@@ -109,10 +109,10 @@ TEST_P(SharedMesh, LayoutIsValidAndMoreLocal) {
   EXPECT_EQ(after.nonmanifold_vertices, before.nonmanifold_vertices);
   EXPECT_EQ(after.euler_characteristic, before.euler_characteristic);
 
-  // The plain mean gap must beat a shuffle; against the file's own order only the log gap is
-  // a fair judge (the remeshed armadillo's own order has a lower plain mean, 139 against 162,
-  // but a log gap of 6.0 against 3.1: see docs/layout.md).
+  // Both gap measures drop below the file's own order and far below a shuffle (the remeshed
+  // armadillo's own order is the hardest to beat: plain mean 139 against 120 after layout).
   const TriangleMesh shuffled = apply_layout(mesh, random_layout(mesh, 1));
+  EXPECT_LT(mean_neighbour_index_distance(laid_out), mean_neighbour_index_distance(mesh));
   EXPECT_LT(mean_neighbour_index_distance(laid_out), 0.5 * mean_neighbour_index_distance(shuffled));
   EXPECT_LT(mean_log_neighbour_index_distance(laid_out), mean_log_neighbour_index_distance(mesh));
   EXPECT_LT(mean_log_neighbour_index_distance(laid_out), mean_log_neighbour_index_distance(shuffled));

@@ -120,6 +120,59 @@ struct MergeTree {
   }
 };
 
+// Turns subtrees around so that the vertices joined to the sibling cluster sit at the boundary
+// the two share in the order. The clustering decides which vertices are together; this decides
+// which end of a cluster faces its neighbour. Without it the few long index gaps between large
+// clusters dominate the mean neighbour index distance (armadillo: 162 against its file order's
+// 139; with it 120). Top-down: a decision reverses the cluster's stretch of `order` in place.
+void orient_subtrees(const MergeTree& tree, Index root, std::size_t begin, std::vector<Index>& order,
+                     std::vector<Index>& position, const std::vector<Index>& size,
+                     const std::vector<Index>& adj_begin, const std::vector<Index>& adj) {
+  struct Item {
+    Index node;
+    std::size_t begin;
+    bool reversed;
+  };
+  std::vector<Item> stack{{root, begin, false}};
+  auto reverse = [&](std::size_t s, std::size_t e) {
+    std::reverse(order.begin() + s, order.begin() + e);
+    for (std::size_t i = s; i < e; ++i) position[order[i]] = Index(i);
+  };
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    if (it.node < tree.leaves) continue;
+    const Index l = tree.left[it.node - tree.leaves], r = tree.right[it.node - tree.leaves];
+    Index first = it.reversed ? r : l, second = it.reversed ? l : r;
+    const std::size_t s = it.begin, m = s + size[first], e = m + size[second];
+    bool flip_first = false, flip_second = false;
+    if (size[first] > 1 && size[second] > 1) {
+      // Mean positions of the endpoints of the edges between the two, found from the smaller.
+      double sum_first = 0, sum_second = 0;
+      std::size_t n = 0;
+      const bool from_first = size[first] <= size[second];
+      const std::size_t from_s = from_first ? s : m, from_e = from_first ? m : e;
+      const std::size_t to_s = from_first ? m : s, to_e = from_first ? e : m;
+      for (std::size_t i = from_s; i < from_e; ++i)
+        for (Index k = adj_begin[order[i]]; k < adj_begin[order[i] + 1]; ++k) {
+          const Index p = position[adj[k]];
+          if (p < to_s || p >= to_e) continue;
+          (from_first ? sum_first : sum_second) += double(i);
+          (from_first ? sum_second : sum_first) += double(p);
+          ++n;
+        }
+      if (n > 0) {
+        flip_first = sum_first / double(n) < 0.5 * double(s + m - 1);
+        flip_second = sum_second / double(n) > 0.5 * double(m + e - 1);
+      }
+    }
+    if (flip_first) reverse(s, m);
+    if (flip_second) reverse(m, e);
+    stack.push_back({second, m, it.reversed != flip_second});
+    stack.push_back({first, s, it.reversed != flip_first});
+  }
+}
+
 struct SplitMix64 {
   std::uint64_t state;
   std::uint64_t next() {
@@ -221,9 +274,33 @@ Layout compute_cache_layout(const TriangleMesh& mesh) {
   // on no edge (unreferenced, or only in faces naming one vertex thrice) go last.
   std::vector<Index> order;
   order.reserve(nv);
-  std::vector<Index> stack;
+  std::vector<Index> stack, roots;
   for (std::size_t c = 0; c < clusters; ++c)
-    if (cluster_node[c] >= nv) tree.append_leaves(cluster_node[c], order, stack);
+    if (cluster_node[c] >= nv) roots.push_back(cluster_node[c]);
+  std::vector<std::size_t> root_begin;
+  for (Index root : roots) {
+    root_begin.push_back(order.size());
+    tree.append_leaves(root, order, stack);
+  }
+  {
+    // Leaf counts per node (children are always created before their parent), positions, and
+    // the vertex adjacency, for orient_subtrees.
+    std::vector<Index> size(nv + tree.left.size(), 1);
+    for (std::size_t i = 0; i < tree.left.size(); ++i) size[nv + i] = size[tree.left[i]] + size[tree.right[i]];
+    std::vector<Index> position(nv, 0);
+    for (std::size_t i = 0; i < order.size(); ++i) position[order[i]] = Index(i);
+    const std::vector<WeightedEdge> all = mesh_edges(mesh);
+    std::vector<Index> adj_begin(nv + 1, 0), adj(2 * all.size());
+    for (const WeightedEdge& e : all) ++adj_begin[e.u + 1], ++adj_begin[e.v + 1];
+    for (std::size_t v = 0; v < nv; ++v) adj_begin[v + 1] += adj_begin[v];
+    std::vector<Index> fill(adj_begin.begin(), adj_begin.end() - 1);
+    for (const WeightedEdge& e : all) adj[fill[e.u]++] = e.v, adj[fill[e.v]++] = e.u;
+    // A second pass sees the inner orientations the first one chose (armadillo: 145 after one
+    // pass, 120 after two, no further gain from a third).
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t i = 0; i < roots.size(); ++i)
+        orient_subtrees(tree, roots[i], root_begin[i], order, position, size, adj_begin, adj);
+  }
   std::vector<bool> placed(nv, false);
   for (Index v : order) placed[v] = true;
   for (Index v = 0; v < nv; ++v)
