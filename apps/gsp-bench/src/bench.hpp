@@ -1,0 +1,64 @@
+#pragma once
+// The measuring loop for one mesh: exact references first (from the cache or computed), then
+// each method in turn: precompute (timed), per source one warm-up run (its distances give the
+// errors) and R timed repetitions. Methods run one after another, never interleaved, so each
+// finds the caches as its own queries left them.
+#include "measure.hpp"
+#include "methods.hpp"
+#include "workload.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gsp::train {
+class ExactCache;
+}
+
+namespace gsp::bench {
+
+struct SourceRun {
+  Index source = 0;
+  std::vector<double> seconds;   // the timed repetitions (empty for exact read from the cache)
+  std::vector<double> cycles;    // time-stamp counter ticks of the same runs
+  PropagationStats stats;
+  bool has_stats = false;
+  bool has_errors = false;       // an exact reference was available
+  ErrorStats errors;
+  bool from_cache = false;       // exact only: read from the cache, not computed in this run
+};
+
+struct MethodRun {
+  MethodInfo method{};
+  std::string skipped;                   // why the method refused the mesh; empty when it ran
+  double precompute_s = 0;               // the Runner's constructor
+  std::size_t state_bytes = 0;           // GSP: GeodesicSolver::state_bytes
+  double solver_bytes = -1;              // heap held by the prepared solver after a query (mallinfo2); < 0 unmeasured
+  std::size_t intrinsic_flips = 0;
+  std::vector<SourceRun> sources;
+  bool ok() const { return skipped.empty(); }
+};
+
+struct MeshRun {
+  const BenchMesh* mesh = nullptr;
+  std::vector<Index> sources;            // this shard's sources, in pick order
+  std::vector<MethodRun> methods;        // in --methods order
+  std::vector<std::string> notes;
+  std::size_t exact_references = 0;      // sources with exact distances (computed or cached)
+  std::size_t exact_cached = 0;          // of those, read from the cache
+};
+
+struct BenchConfig {
+  std::vector<MethodInfo> methods;
+  int repetitions = 5;
+  std::uint64_t seed = 1;
+  const train::ExactCache* cache = nullptr;
+};
+
+using StepFn = std::function<void()>;                     // one (method, source) done
+using NoteFn = std::function<void(const std::string&)>;   // a remark for stderr
+
+MeshRun bench_mesh(const BenchMesh& mesh, const std::vector<Index>& sources, const BenchConfig& config,
+                   const StepFn& step, const NoteFn& note);
+
+}  // namespace gsp::bench

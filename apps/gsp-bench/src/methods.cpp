@@ -1,0 +1,170 @@
+#include "methods.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/dijkstra.hpp>
+#include <gsp/layout.hpp>
+#include <gsp/reference/exact_geodesics.hpp>
+#include <gsp/reference/heat_method.hpp>
+
+#include <algorithm>
+#include <sstream>
+
+namespace gsp::bench {
+
+const std::vector<MethodInfo>& all_methods() {
+  static const std::vector<MethodInfo> methods = {
+      {Method::gsp, "gsp", "GSP: optimised layout, speed limiter, single precision (the defaults)", true},
+      {Method::gsp_pq, "gsp-pq", "GSP with a priority queue (Dijkstra order on d_T)", true},
+      {Method::gsp_bfs, "gsp-bfs", "GSP in topological (BFS) order", true},
+      {Method::gsp_hybrid, "gsp-hybrid", "GSP with hybrid postpone (fat queue)", true},
+      {Method::gsp_double, "gsp-double", "GSP with double-precision state", true},
+      {Method::gsp_random_layout, "gsp-random-layout", "GSP on a randomly shuffled mesh, layout optimisation off", true},
+      {Method::gsp_no_layout, "gsp-no-layout", "GSP on the file's order, layout optimisation off", true},
+      {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
+      {Method::dijkstra, "dijkstra", "Dijkstra on the edge graph (binary heap)", true},
+      {Method::heat, "heat", "CGAL heat method on the input triangles", true},
+      {Method::heat_idt, "heat-idt", "CGAL heat method on an intrinsic Delaunay retriangulation", true},
+      {Method::exact, "exact", "CGAL exact geodesics (Xin-Wang), the reference", true},
+  };
+  return methods;
+}
+
+std::string default_method_list() {
+  std::string out;
+  for (const MethodInfo& m : all_methods())
+    if (m.in_default_list) out += (out.empty() ? "" : ",") + std::string(m.name);
+  return out;
+}
+
+std::string method_names() {
+  std::string out;
+  for (const MethodInfo& m : all_methods()) out += (out.empty() ? "" : ", ") + std::string(m.name);
+  return out;
+}
+
+const MethodInfo& method_info(Method id) {
+  for (const MethodInfo& m : all_methods())
+    if (m.id == id) return m;
+  return all_methods().front();   // unreachable: every enumerator is listed
+}
+
+bool is_gsp(Method id) { return id <= Method::gsp_input_faces; }
+bool uses_cgal(Method id) { return id == Method::heat || id == Method::heat_idt || id == Method::exact; }
+
+std::vector<MethodInfo> parse_methods(const std::string& list) {
+  std::vector<MethodInfo> out;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    if (name.empty()) continue;
+    const auto& all = all_methods();
+    auto it = std::find_if(all.begin(), all.end(), [&](const MethodInfo& m) { return name == m.name; });
+    if (it == all.end())
+      throw cli::UsageError("--methods: \"" + name + "\" is not one of " + method_names());
+    if (std::none_of(out.begin(), out.end(), [&](const MethodInfo& m) { return m.id == it->id; }))
+      out.push_back(*it);
+  }
+  if (out.empty()) throw cli::UsageError("--methods: no method given");
+  return out;
+}
+
+namespace {
+
+class GspRunner : public Runner {
+ public:
+  GspRunner(const TriangleMesh& mesh, const SolverOptions& so, const GeodesicOptions& go)
+      : solver_(mesh, so), options_(go) {}
+  Outcome run(Index source) override {
+    GeodesicResult r = solver_.compute({Source::at_vertex(source)}, options_);
+    return {std::move(r.vertex_distance), r.stats, true};
+  }
+  std::size_t state_bytes() const override { return solver_.state_bytes(options_.precision); }
+  std::size_t intrinsic_flips() const override { return solver_.intrinsic_flips(); }
+
+ private:
+  GeodesicSolver solver_;
+  GeodesicOptions options_;
+};
+
+// The mesh is permuted by a random layout before the solver sees it; sources are mapped in
+// and distances out, both outside the timed call.
+class RandomLayoutRunner : public Runner {
+ public:
+  RandomLayoutRunner(const TriangleMesh& mesh, std::uint64_t seed)
+      : layout_(random_layout(mesh, seed)), solver_(apply_layout(mesh, layout_), no_layout()) {}
+  Outcome run(Index source) override {
+    GeodesicResult r = solver_.compute({Source::at_vertex(layout_.vertex_rank[source])});
+    return {std::move(r.vertex_distance), r.stats, true};
+  }
+  std::vector<double> to_mesh_order(std::vector<double> d) const override {
+    std::vector<double> out(d.size());
+    for (std::size_t v = 0; v < d.size(); ++v) out[v] = d[layout_.vertex_rank[v]];
+    return out;
+  }
+  std::size_t state_bytes() const override { return solver_.state_bytes(Precision::single); }
+  std::size_t intrinsic_flips() const override { return solver_.intrinsic_flips(); }
+
+ private:
+  static SolverOptions no_layout() {
+    SolverOptions so;
+    so.optimize_layout = false;
+    return so;
+  }
+  Layout layout_;
+  GeodesicSolver solver_;
+};
+
+class DijkstraRunner : public Runner {
+ public:
+  explicit DijkstraRunner(const TriangleMesh& mesh) : solver_(mesh) {}
+  Outcome run(Index source) override {
+    GeodesicResult r = solver_.compute({Source::at_vertex(source)});
+    return {std::move(r.vertex_distance), r.stats, true};
+  }
+
+ private:
+  DijkstraSolver solver_;
+};
+
+class HeatRunner : public Runner {
+ public:
+  HeatRunner(const TriangleMesh& mesh, reference::HeatMethodMode mode) : solver_(mesh, mode) {}
+  Outcome run(Index source) override { return {solver_.solve({source}), {}, false}; }
+
+ private:
+  reference::HeatMethodSolver solver_;
+};
+
+class ExactRunner : public Runner {
+ public:
+  explicit ExactRunner(const TriangleMesh& mesh) : solver_(mesh) {}
+  Outcome run(Index source) override { return {solver_.distances_from_vertex(source), {}, false}; }
+
+ private:
+  reference::ExactGeodesicSolver solver_;
+};
+
+}  // namespace
+
+std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed) {
+  SolverOptions so;
+  GeodesicOptions go;
+  switch (method) {
+    case Method::gsp: break;
+    case Method::gsp_pq: go.strategy = Strategy::priority_queue; break;
+    case Method::gsp_bfs: go.strategy = Strategy::bfs; break;
+    case Method::gsp_hybrid: go.strategy = Strategy::hybrid_postpone; break;
+    case Method::gsp_double: go.precision = Precision::double_precision; break;
+    case Method::gsp_no_layout: so.optimize_layout = false; break;
+    case Method::gsp_input_faces: so.intrinsic_delaunay = false; break;
+    case Method::gsp_random_layout: return std::make_unique<RandomLayoutRunner>(mesh, seed);
+    case Method::dijkstra: return std::make_unique<DijkstraRunner>(mesh);
+    case Method::heat: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::direct);
+    case Method::heat_idt: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::intrinsic_delaunay);
+    case Method::exact: return std::make_unique<ExactRunner>(mesh);
+  }
+  return std::make_unique<GspRunner>(mesh, so, go);
+}
+
+}  // namespace gsp::bench

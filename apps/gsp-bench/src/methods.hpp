@@ -1,0 +1,71 @@
+#pragma once
+// The methods gsp-bench compares, and a uniform way to run them: a Runner is one method
+// prepared on one mesh (its constructor is the precompute step: solver build, heat
+// factorisation, CGAL structures), and run() answers one single-source query, which is what
+// gets timed.
+#include <gsp/geodesics.hpp>
+#include <gsp/mesh.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gsp::bench {
+
+enum class Method {
+  gsp,                 // GSP as shipped: optimised layout, speed limiter, single precision
+  gsp_pq,              // priority queue (Dijkstra order on d_T)
+  gsp_bfs,             // topological (BFS) order
+  gsp_hybrid,          // hybrid postpone, fat queue
+  gsp_double,          // double-precision state
+  gsp_random_layout,   // the mesh shuffled in memory, no layout optimisation
+  gsp_no_layout,       // the mesh in file order, no layout optimisation
+  gsp_input_faces,     // on the input triangles instead of their intrinsic Delaunay flip
+  dijkstra,            // edge graph, binary heap
+  heat,                // CGAL heat method on the input triangles
+  heat_idt,            // CGAL heat method on an intrinsic Delaunay retriangulation
+  exact,               // CGAL exact geodesics (the reference)
+};
+
+struct MethodInfo {
+  Method id;
+  const char* name;          // as on the command line and in the reports
+  const char* description;
+  bool in_default_list;
+};
+
+const std::vector<MethodInfo>& all_methods();
+std::string default_method_list();   // "gsp,gsp-pq,..."
+std::string method_names();          // every name, for --help
+const MethodInfo& method_info(Method id);
+bool is_gsp(Method id);
+bool uses_cgal(Method id);           // refused on meshes CGAL cannot take
+
+// "gsp,dijkstra" -> the methods in the order given; duplicates dropped. UsageError for
+// unknown names or an empty list.
+std::vector<MethodInfo> parse_methods(const std::string& list);
+
+// What one query produced.
+struct Outcome {
+  std::vector<double> distance;   // per vertex, in the runner's own vertex order
+  PropagationStats stats;         // GSP and Dijkstra only
+  bool has_stats = false;
+};
+
+class Runner {
+ public:
+  virtual ~Runner() = default;
+  virtual Outcome run(Index source) = 0;   // the timed part
+  // Distances back in the mesh's vertex order (only the random layout permutes; untimed).
+  virtual std::vector<double> to_mesh_order(std::vector<double> d) const { return d; }
+  // GSP: bytes of propagation state per query (GeodesicSolver::state_bytes); 0 otherwise.
+  virtual std::size_t state_bytes() const { return 0; }
+  virtual std::size_t intrinsic_flips() const { return 0; }
+};
+
+// Prepares `method` on `mesh` (the precompute step). `seed` shuffles the random layout.
+// Throws gsp::TopologyError / gsp::InvalidInput / gsp::Error where the method refuses the mesh.
+std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed);
+
+}  // namespace gsp::bench

@@ -1,0 +1,38 @@
+#include "options.hpp"
+
+#include <gsp/cli/app.hpp>
+
+#include <CLI/CLI.hpp>
+
+namespace gsp::bench {
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("MESH", o.meshes, "meshes to benchmark (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("--methods", o.methods, "comma-separated methods (default: all; see docs/apps/gsp-bench.md): " +
+                                             method_names())
+      ->type_name("LIST");
+  app.add_option("--sources", o.sources, "random source vertices per mesh (default 4)")->check(CLI::Range(1, 100000));
+  app.add_option("--seed", o.seed, "seed of the source picks and of the random layout (default 1)");
+  app.add_option("--repetitions", o.repetitions, "timed runs per source after one warm-up; the median is reported (default 5)")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--json", o.json, "full report as JSON (- for stdout)")->type_name("FILE");
+  app.add_option("--csv", o.csv, "one row per (mesh, method) as CSV (- for stdout)")->type_name("FILE");
+  app.add_option("--cache", o.cache, "folder for exact distances, keyed by mesh content and source vertex")
+      ->type_name("DIR");
+  app.add_option("--shard", o.shard, "run only every n-th (mesh, source) work item, starting at i (default 0/1)")
+      ->type_name("i/n");
+  app.add_flag("--no-table", o.no_table, "print no table on stdout");
+  cli::add_load_options(app, o.load);
+}
+
+Settings check_options(const Options& o, bool stats_to_stdout) {
+  Settings s;
+  s.methods = parse_methods(o.methods);
+  s.shard = parse_shard(o.shard);
+  const int on_stdout = int(o.json == "-") + int(o.csv == "-") + int(stats_to_stdout);
+  if (on_stdout > 1) throw cli::UsageError("only one of --json, --csv and --stats can be - (stdout)");
+  s.table = !o.no_table && on_stdout == 0;
+  return s;
+}
+
+}  // namespace gsp::bench

@@ -1,0 +1,42 @@
+#pragma once
+// What gsp-bench is asked to do, as parsed from the command line.
+#include "methods.hpp"
+#include "workload.hpp"
+
+#include <gsp/cli/load.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace gsp::bench {
+
+struct Options {
+  std::vector<std::string> meshes;
+  std::string methods = default_method_list();
+  int sources = 4;
+  std::uint64_t seed = 1;          // the same default as gsp-train-heuristic: shared cache entries
+  int repetitions = 5;
+  std::string json, csv;           // "" = none, "-" = stdout
+  std::string cache;               // exact-distance cache folder, "" = none
+  std::string shard = "0/1";
+  bool no_table = false;
+  cli::LoadOptions load;
+};
+
+void add_options(CLI::App& app, Options& options);
+
+// The checked settings (UsageError for unknown methods, a malformed shard, two outputs on
+// stdout).
+struct Settings {
+  std::vector<MethodInfo> methods;
+  Shard shard;
+  bool table = true;   // the human-readable table on stdout
+};
+Settings check_options(const Options& options, bool stats_to_stdout);
+
+}  // namespace gsp::bench

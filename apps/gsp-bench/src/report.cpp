@@ -1,0 +1,193 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace gsp::bench {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+const MethodRun* find(const MeshRun& run, Method id) {
+  for (const MethodRun& m : run.methods)
+    if (m.method.id == id && m.ok()) return &m;
+  return nullptr;
+}
+
+double query_seconds(const MethodRun& m) {
+  std::vector<double> per_source;
+  for (const SourceRun& s : m.sources)
+    if (!s.seconds.empty()) per_source.push_back(median(s.seconds));
+  return median(per_source);
+}
+
+double ratio_to(const MeshRun& run, Method other, double mine) {
+  const MethodRun* o = find(run, other);
+  if (!o) return kNaN;
+  const double t = query_seconds(*o);
+  return t > 0 ? mine / t : kNaN;
+}
+
+std::string hex(std::uint64_t h) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, h);
+  return buf;
+}
+
+cli::Json number_or_null(double d) { return std::isfinite(d) ? cli::Json(d) : cli::Json(); }
+
+// CSV field: numbers with enough digits to read back; text quoted when it has to be (RFC 4180).
+std::string field(double d) {
+  if (!std::isfinite(d)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", d);
+  return buf;
+}
+std::string field(const std::string& s) {
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+}  // namespace
+
+Summary summarise(const MeshRun& run, const MethodRun& m) {
+  Summary s{};
+  const double nv = double(run.mesh->mesh.num_vertices());
+  const double nf = double(run.mesh->mesh.num_faces());
+  s.precompute_s = m.ok() ? m.precompute_s : kNaN;
+  s.query_s = query_seconds(m);
+  s.vertices_per_s = s.query_s > 0 ? nv / s.query_s : kNaN;
+  std::vector<double> cycles;
+  double steps = 0, mre = 0, max_re = 0;
+  std::size_t stats_sources = 0;
+  for (const SourceRun& r : m.sources) {
+    if (!r.seconds.empty()) ++s.timed_sources;
+    if (!r.cycles.empty() && have_cycle_counter()) cycles.push_back(median(r.cycles));
+    if (r.has_stats && is_gsp(m.method.id)) steps += double(r.stats.update_steps), ++stats_sources;
+    if (r.has_errors) {
+      mre += r.errors.mre, max_re = std::max(max_re, r.errors.max_re), ++s.error_sources;
+      s.unreached += r.errors.unreached;
+    }
+  }
+  s.cycles_per_vertex = cycles.empty() ? kNaN : median(cycles) / nv;
+  s.update_steps_per_triangle = stats_sources && nf > 0 ? steps / double(stats_sources) / nf : kNaN;
+  s.mre = s.error_sources ? mre / double(s.error_sources) : kNaN;
+  s.max_re = s.error_sources ? max_re : kNaN;
+  s.state_bytes_per_vertex = is_gsp(m.method.id) && m.ok() ? double(m.state_bytes) / nv : kNaN;
+  s.solver_bytes_per_vertex = m.ok() && m.solver_bytes >= 0 ? m.solver_bytes / nv : kNaN;
+  s.vs_dijkstra = ratio_to(run, Method::dijkstra, s.query_s);
+  s.vs_heat = ratio_to(run, Method::heat, s.query_s);
+  s.vs_heat_idt = ratio_to(run, Method::heat_idt, s.query_s);
+  s.vs_gsp = ratio_to(run, Method::gsp, s.query_s);
+  return s;
+}
+
+cli::Json to_json(const Report& report) {
+  cli::Json doc;
+  doc["settings"] = report.settings;
+  doc["machine"] = report.machine;
+  doc["total_work_items"] = report.total_items;
+  cli::Json& items = doc["work_items"] = cli::Json::array();
+  for (const WorkItem& w : report.items) {
+    cli::Json item;
+    item["index"] = w.index;
+    item["mesh"] = report.all_meshes[w.mesh]->name;
+    item["source"] = w.source;
+    items.push_back(std::move(item));
+  }
+  cli::Json& meshes = doc["meshes"] = cli::Json::array();
+  for (const MeshRun& run : report.runs) {
+    cli::Json mj;
+    mj["name"] = run.mesh->name;
+    mj["path"] = run.mesh->path;
+    mj["vertices"] = run.mesh->mesh.num_vertices();
+    mj["faces"] = run.mesh->mesh.num_faces();
+    mj["hash"] = hex(run.mesh->hash);
+    mj["sources"] = cli::Json::array_of(run.sources);
+    mj["exact_references"] = run.exact_references;
+    mj["exact_cached"] = run.exact_cached;
+    mj["notes"] = cli::Json::array_of(run.notes);
+    cli::Json& methods = mj["methods"] = cli::Json::array();
+    for (const MethodRun& m : run.methods) {
+      const Summary s = summarise(run, m);
+      cli::Json j;
+      j["method"] = m.method.name;
+      j["status"] = m.ok() ? "ok" : "skipped";
+      if (!m.ok()) j["reason"] = m.skipped;
+      j["precompute_s"] = number_or_null(s.precompute_s);
+      j["query_s"] = number_or_null(s.query_s);
+      j["vertices_per_s"] = number_or_null(s.vertices_per_s);
+      j["cycles_per_vertex"] = number_or_null(s.cycles_per_vertex);
+      j["update_steps_per_triangle"] = number_or_null(s.update_steps_per_triangle);
+      j["mre"] = number_or_null(s.mre);
+      j["max_re"] = number_or_null(s.max_re);
+      j["unreached"] = s.unreached;
+      j["state_bytes_per_vertex"] = number_or_null(s.state_bytes_per_vertex);
+      j["solver_bytes_per_vertex"] = number_or_null(s.solver_bytes_per_vertex);
+      j["vs_dijkstra"] = number_or_null(s.vs_dijkstra);
+      j["vs_heat"] = number_or_null(s.vs_heat);
+      j["vs_heat_idt"] = number_or_null(s.vs_heat_idt);
+      j["vs_gsp"] = number_or_null(s.vs_gsp);
+      if (is_gsp(m.method.id) && m.ok()) j["intrinsic_flips"] = m.intrinsic_flips;
+      cli::Json& per = j["per_source"] = cli::Json::array();
+      for (const SourceRun& r : m.sources) {
+        cli::Json sj;
+        sj["source"] = r.source;
+        if (r.from_cache) sj["from_cache"] = true;
+        sj["median_s"] = number_or_null(median(r.seconds));
+        sj["seconds"] = cli::Json::array_of(r.seconds);
+        sj["cycles"] = cli::Json::array_of(r.cycles);
+        if (r.has_stats) {
+          sj["update_steps"] = r.stats.update_steps;
+          sj["face_updates"] = r.stats.face_updates;
+          sj["enqueued"] = r.stats.enqueued;
+          sj["faces_reached"] = r.stats.faces_reached;
+        }
+        if (r.has_errors) {
+          sj["mre"] = r.errors.mre;
+          sj["max_re"] = r.errors.max_re;
+          sj["unreached"] = r.errors.unreached;
+        }
+        per.push_back(std::move(sj));
+      }
+      methods.push_back(std::move(j));
+    }
+    meshes.push_back(std::move(mj));
+  }
+  return doc;
+}
+
+std::string csv_header() {
+  return "mesh,vertices,faces,method,status,sources,repetitions,precompute_s,query_s,vertices_per_s,"
+         "cycles_per_vertex,update_steps_per_triangle,mre,max_re,unreached,state_bytes_per_vertex,"
+         "solver_bytes_per_vertex,vs_dijkstra,vs_heat,vs_heat_idt,vs_gsp,exact_cached\n";
+}
+
+std::string to_csv(const Report& report) {
+  std::string out = csv_header();
+  const cli::Json* reps = report.settings.find("repetitions");
+  const std::string repetitions = reps ? reps->dump(-1) : "";
+  for (const MeshRun& run : report.runs)
+    for (const MethodRun& m : run.methods) {
+      const Summary s = summarise(run, m);
+      const std::size_t cached = m.method.id == Method::exact ? run.exact_cached : 0;
+      out += field(run.mesh->name) + "," + std::to_string(run.mesh->mesh.num_vertices()) + "," +
+             std::to_string(run.mesh->mesh.num_faces()) + "," + m.method.name + "," +
+             (m.ok() ? std::string("ok") : field("skipped: " + m.skipped)) + "," + std::to_string(run.sources.size()) +
+             "," + (m.method.id == Method::exact ? "1" : repetitions) + "," + field(s.precompute_s) + "," +
+             field(s.query_s) + "," + field(s.vertices_per_s) + "," + field(s.cycles_per_vertex) + "," +
+             field(s.update_steps_per_triangle) + "," + field(s.mre) + "," + field(s.max_re) + "," +
+             std::to_string(s.unreached) + "," + field(s.state_bytes_per_vertex) + "," +
+             field(s.solver_bytes_per_vertex) + "," + field(s.vs_dijkstra) + "," + field(s.vs_heat) + "," +
+             field(s.vs_heat_idt) + "," + field(s.vs_gsp) + "," + std::to_string(cached) + "\n";
+    }
+  return out;
+}
+
+}  // namespace gsp::bench

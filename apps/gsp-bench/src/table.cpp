@@ -1,0 +1,114 @@
+#include "table.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+
+namespace gsp::bench {
+
+namespace {
+
+void appendf(std::string& out, const char* format, ...) __attribute__((format(printf, 2, 3)));
+void appendf(std::string& out, const char* format, ...) {
+  char buf[512];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buf, sizeof buf, format, args);
+  va_end(args);
+  out += buf;
+}
+
+// A number right-aligned in `width`, "-" when it does not apply.
+std::string cell(double v, int width, const char* format) {
+  char buf[64];
+  if (!std::isfinite(v)) std::snprintf(buf, sizeof buf, "%*s", width, "-");
+  else {
+    char num[48];
+    std::snprintf(num, sizeof num, format, v);
+    std::snprintf(buf, sizeof buf, "%*s", width, num);
+  }
+  return buf;
+}
+
+double time_of(const MeshRun& run, Method id) {
+  for (const MethodRun& m : run.methods)
+    if (m.method.id == id && m.ok()) return summarise(run, m).query_s;
+  return std::nan("");
+}
+
+struct GeoMean {
+  double log_sum = 0;
+  int n = 0;
+  void add(double r) {
+    if (std::isfinite(r) && r > 0) log_sum += std::log(r), ++n;
+  }
+  double value() const { return n ? std::exp(log_sum / n) : std::nan(""); }
+};
+
+}  // namespace
+
+std::string format_table(const Report& report) {
+  std::string out;
+  for (const MeshRun& run : report.runs) {
+    const BenchMesh& m = *run.mesh;
+    appendf(out, "%s: %zu vertices, %zu faces, %zu sources, exact references %zu (%zu from cache)\n",
+            m.name.c_str(), m.mesh.num_vertices(), m.mesh.num_faces(), run.sources.size(), run.exact_references,
+            run.exact_cached);
+    appendf(out, "  %-18s %10s %10s %9s %9s %9s %8s %8s %9s %8s %8s %8s %8s\n", "method", "precomp_s", "query_ms",
+            "Mvert/s", "cyc/vert", "steps/tri", "MRE_%", "maxRE_%", "state_B/v", "heap_B/v", "x_dijk", "x_heat",
+            "x_gsp");
+    for (const MethodRun& mr : run.methods) {
+      if (!mr.ok()) {
+        appendf(out, "  %-18s skipped (see the note below)\n", mr.method.name);
+        continue;
+      }
+      const Summary s = summarise(run, mr);
+      out += "  ";
+      appendf(out, "%-18s", mr.method.name);
+      out += " " + cell(s.precompute_s, 10, "%.4f") + " " + cell(s.query_s * 1e3, 10, "%.3f") + " " +
+             cell(s.vertices_per_s * 1e-6, 9, "%.3f") + " " + cell(s.cycles_per_vertex, 9, "%.0f") + " " +
+             cell(s.update_steps_per_triangle, 9, "%.3f") + " " + cell(s.mre * 100, 8, "%.4f") + " " +
+             cell(s.max_re * 100, 8, "%.3f") + " " + cell(s.state_bytes_per_vertex, 9, "%.1f") + " " +
+             cell(s.solver_bytes_per_vertex, 8, "%.0f") + " " + cell(s.vs_dijkstra, 8, "%.3f") + " " +
+             cell(s.vs_heat, 8, "%.3f") + " " + cell(s.vs_gsp, 8, "%.3f") + "\n";
+    }
+    for (const std::string& note : run.notes) appendf(out, "  note: %s\n", note.c_str());
+    out += "\n";
+  }
+
+  // The headline ratios: per mesh where both sides ran, then their geometric mean.
+  struct Pair {
+    const char* label;
+    Method num, den;
+    GeoMean mean;
+  };
+  Pair pairs[] = {{"gsp / dijkstra", Method::gsp, Method::dijkstra, {}},
+                  {"gsp / heat solve", Method::gsp, Method::heat, {}},
+                  {"gsp / heat-idt solve", Method::gsp, Method::heat_idt, {}},
+                  {"random layout / gsp", Method::gsp_random_layout, Method::gsp, {}},
+                  {"no layout / gsp", Method::gsp_no_layout, Method::gsp, {}}};
+  bool any = false;
+  for (const Pair& p : pairs)
+    for (const MeshRun& run : report.runs)
+      any = any || std::isfinite(time_of(run, p.num) / time_of(run, p.den));
+  if (!any) return out;
+  out += "query-time ratios (lower = the first is faster)\n";
+  appendf(out, "  %-28s", "mesh");
+  for (const Pair& p : pairs) appendf(out, " %21s", p.label);
+  out += "\n";
+  for (const MeshRun& run : report.runs) {
+    appendf(out, "  %-28s", run.mesh->name.c_str());
+    for (Pair& p : pairs) {
+      const double r = time_of(run, p.num) / time_of(run, p.den);
+      p.mean.add(r);
+      out += " " + cell(r, 21, "%.3f");
+    }
+    out += "\n";
+  }
+  appendf(out, "  %-28s", "geometric mean");
+  for (const Pair& p : pairs) out += " " + cell(p.mean.value(), 21, "%.3f");
+  out += "\n";
+  return out;
+}
+
+}  // namespace gsp::bench

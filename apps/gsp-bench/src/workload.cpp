@@ -1,0 +1,76 @@
+#include "workload.hpp"
+
+#include "exact_cache.hpp"
+
+#include <gsp/cli/app.hpp>
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <random>
+
+namespace gsp::bench {
+
+std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash) {
+  std::vector<std::uint8_t> used(mesh.num_vertices(), 0);
+  for (const Triangle& t : mesh.triangles)
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  std::vector<Index> candidates;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    if (used[v]) candidates.push_back(v);
+  std::mt19937_64 rng(seed ^ hash);
+  const std::size_t n = std::min<std::size_t>(std::size_t(std::max(count, 0)), candidates.size());
+  std::vector<Index> picks;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::swap(candidates[i], candidates[i + rng() % (candidates.size() - i)]);
+    picks.push_back(candidates[i]);
+  }
+  return picks;
+}
+
+BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed) {
+  cli::LoadedMesh in = cli::load_mesh(path, load);
+  BenchMesh m;
+  m.path = path;
+  m.name = std::filesystem::path(path).filename().string();
+  m.mesh = std::move(in.mesh);
+  m.hash = train::mesh_hash(m.mesh);
+  m.sources = pick_sources(m.mesh, sources, seed, m.hash);
+  return m;
+}
+
+Shard parse_shard(const std::string& text) {
+  const auto fail = [&] {
+    return cli::UsageError("--shard: \"" + text + "\" is not i/n with integers 0 <= i < n");
+  };
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw fail();
+  Shard s;
+  const char* b = text.data();
+  const char* e = b + text.size();
+  auto r1 = std::from_chars(b, b + slash, s.index);
+  auto r2 = std::from_chars(b + slash + 1, e, s.count);
+  if (r1.ec != std::errc() || r1.ptr != b + slash || r2.ec != std::errc() || r2.ptr != e || slash == 0 ||
+      s.count == 0 || s.index >= s.count)
+    throw fail();
+  return s;
+}
+
+std::vector<WorkItem> work_items(const std::vector<BenchMesh>& meshes, Shard shard) {
+  std::vector<WorkItem> out;
+  std::size_t k = 0;
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+    for (Index s : meshes[m].sources) {
+      if (k % shard.count == shard.index) out.push_back({k, m, s});
+      ++k;
+    }
+  return out;
+}
+
+std::size_t total_work_items(const std::vector<BenchMesh>& meshes) {
+  std::size_t n = 0;
+  for (const BenchMesh& m : meshes) n += m.sources.size();
+  return n;
+}
+
+}  // namespace gsp::bench

@@ -1,0 +1,8 @@
+# Tests of gsp-bench (GPL: the app links CGAL). They run the built binary on the bundled
+# fertility sample; bench_errors_test recomputes its errors in-process.
+if(TARGET gsp-bench)
+  gsp_test(bench_app_test SOURCES bench_app_test.cpp DEPS gsp::io)
+  add_dependencies(bench_app_test gsp-bench)   # the test runs the binary
+  gsp_test(bench_errors_test SOURCES bench_errors_test.cpp DEPS gsp::reference gsp::core gsp::io)
+  add_dependencies(bench_errors_test gsp-bench)
+endif()
