@@ -1,0 +1,64 @@
+#include <gsp/batch.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace gsp {
+
+unsigned resolve_threads(unsigned threads, std::size_t jobs) {
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, jobs)));
+}
+
+namespace {
+
+// Runs job(i) for i in [0, n) on `threads` threads (the calling thread is one of them).
+template <class Job>
+void parallel_for(std::size_t n, unsigned threads, const Job& job) {
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < n;) {
+      try {
+        job(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = n;   // stop handing out work
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace
+
+std::vector<GeodesicResult> compute_many(const GeodesicSolver& solver,
+                                         const std::vector<std::vector<Source>>& queries,
+                                         const GeodesicOptions& options, unsigned threads) {
+  std::vector<GeodesicResult> results(queries.size());
+  parallel_for(queries.size(), resolve_threads(threads, queries.size()),
+               [&](std::size_t i) { results[i] = solver.compute(queries[i], options); });
+  return results;
+}
+
+std::vector<double> distance_matrix(const GeodesicSolver& solver, const std::vector<Index>& vertices,
+                                    const GeodesicOptions& options, unsigned threads) {
+  const std::size_t n = vertices.size();
+  std::vector<double> matrix(n * n);
+  parallel_for(n, resolve_threads(threads, n), [&](std::size_t i) {
+    const GeodesicResult r = solver.compute({Source::at_vertex(vertices[i])}, options);
+    for (std::size_t j = 0; j < n; ++j) matrix[i * n + j] = r.vertex_distance[vertices[j]];
+  });
+  return matrix;
+}
+
+}  // namespace gsp
