@@ -33,7 +33,7 @@ const std::vector<std::string> kCsvColumns = {
     "mesh", "vertices", "faces", "method", "status", "sources", "repetitions", "precompute_s", "query_s",
     "vertices_per_s", "cycles_per_vertex", "update_steps_per_triangle", "mre", "max_re", "unreached",
     "state_bytes_per_vertex", "solver_bytes_per_vertex", "vs_dijkstra", "vs_heat", "vs_heat_idt", "vs_gsp",
-    "exact_cached"};
+    "exact_cached", "clock"};
 
 std::vector<double> sources_of(const JsonValue& method) {
   std::vector<double> out;
@@ -63,6 +63,7 @@ TEST(BenchApp, ReportsOneRowPerMeshAndMethod) {
     EXPECT_EQ(rows[i][2], "9000");
     EXPECT_EQ(rows[i][4], "ok");
     EXPECT_EQ(rows[i][5], "2");
+    EXPECT_EQ(rows[i][22], "wall");
     names.push_back(rows[i][3]);
     if (rows[i][3] == "exact") continue;
     EXPECT_GT(std::stod(rows[i][8]), 0.0) << rows[i][3];   // a query time was measured
@@ -80,10 +81,14 @@ TEST(BenchApp, ReportsOneRowPerMeshAndMethod) {
   EXPECT_EQ(mesh["methods"].items.size(), 7u);
   // One warm-up (untimed) and one repetition per source.
   for (const JsonValue& s : bench_method(mesh, "gsp")["per_source"].items) EXPECT_EQ(s["seconds"].items.size(), 1u);
-  // Update steps per triangle from the per-source counts: mean(update_steps) / faces.
+  // Update steps per triangle from the per-source counts: mean(update_steps / faces reached),
+  // and fertility is connected: every face is reached.
   const JsonValue& gsp = bench_method(mesh, "gsp");
   double steps = 0;
-  for (const JsonValue& s : gsp["per_source"].items) steps += s["update_steps"].num;
+  for (const JsonValue& s : gsp["per_source"].items) {
+    EXPECT_EQ(s["faces_reached"].num, 9000);
+    steps += s["update_steps"].num;
+  }
   EXPECT_NEAR(gsp["update_steps_per_triangle"].num, steps / 2 / 9000, 1e-12);
   EXPECT_GE(gsp["update_steps_per_triangle"].num, 1.0);   // every face is reached at least once
   EXPECT_GT(gsp["state_bytes_per_vertex"].num, 0.0);
@@ -96,7 +101,7 @@ TEST(BenchApp, SameSourcesForEveryMethodAndRun) {
                              "gsp,gsp-bfs,gsp-random-layout,dijkstra,heat --json -";
   const auto a = run_bench(common + " --seed 7", dir);
   const auto b = run_bench(common + " --seed 7", dir);
-  const auto c = run_bench(common + " --seed 8", dir);
+  const auto c = run_bench(common + " --seed 8 --clock cpu", dir);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   ASSERT_EQ(c.exit_code, 0) << c.err;
   const JsonValue ja = parse_json(a.out), jb = parse_json(b.out), jc = parse_json(c.out);
@@ -112,6 +117,15 @@ TEST(BenchApp, SameSourcesForEveryMethodAndRun) {
   for (const JsonValue& s : jc["meshes"].items[0]["sources"].items) other.push_back(s.num);
   EXPECT_EQ(again, picks);    // seeded: the same picks every run
   EXPECT_NE(other, picks);    // another seed, other picks (3 of 4494 vertices)
+
+  // --clock picks which of the two measured clocks is "seconds" (and so the medians).
+  EXPECT_EQ(jc["settings"]["clock"].str, "cpu");
+  for (const JsonValue& src : bench_method(jc["meshes"].items[0], "gsp")["per_source"].items) {
+    ASSERT_EQ(src["seconds"].items.size(), 1u);
+    EXPECT_EQ(src["seconds"].items[0].num, src["cpu_seconds"].items[0].num);
+  }
+  for (const JsonValue& src : bench_method(mesh, "gsp")["per_source"].items)
+    EXPECT_EQ(src["seconds"].items[0].num, src["wall_seconds"].items[0].num);
 
   // Every pick is a vertex of some face.
   const gsp::TriangleMesh fertility = gsp::io::read_mesh(sample_fertility()).mesh;

@@ -5,6 +5,7 @@
 #include <gsp/errors.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -19,17 +20,26 @@ double heap_delta(std::size_t before) {
   return after > before ? double(after - before) : 0.0;
 }
 
-// The timed repetitions of one query. The outcome is destroyed after the clock stops.
-void time_runs(Runner& runner, Index source, int repetitions, SourceRun& out) {
-  for (int r = 0; r < repetitions; ++r) {
-    const std::uint64_t c0 = cycle_counter();
-    const double t0 = now_seconds();
-    Outcome o = runner.run(source);
-    const double t1 = now_seconds();
-    const std::uint64_t c1 = cycle_counter();
-    out.seconds.push_back(t1 - t0);
-    out.cycles.push_back(double(c1 - c0));
-  }
+std::size_t count_finite(const std::vector<double>& d) {
+  return std::size_t(std::count_if(d.begin(), d.end(), [](double x) { return std::isfinite(x); }));
+}
+
+// One timed query; the outcome is destroyed by the caller, after the clocks stop.
+Outcome timed_run(Runner& runner, Index source, bool cpu_clock, SourceRun& out) {
+  const std::uint64_t c0 = cycle_counter();
+  const Stopwatch watch;
+  Outcome o = runner.run(source);
+  const double wall = watch.wall(), cpu = watch.cpu();
+  const std::uint64_t c1 = cycle_counter();
+  out.wall_seconds.push_back(wall);
+  out.cpu_seconds.push_back(cpu);
+  out.seconds.push_back(cpu_clock ? cpu : wall);
+  out.cycles.push_back(double(c1 - c0));
+  return o;
+}
+
+void time_runs(Runner& runner, Index source, int repetitions, bool cpu_clock, SourceRun& out) {
+  for (int r = 0; r < repetitions; ++r) timed_run(runner, source, cpu_clock, out);
 }
 
 // Exact distances per source: read from the cache, computed when `exact` is among the methods
@@ -46,20 +56,18 @@ MethodRun exact_references(const BenchMesh& mesh, const std::vector<Index>& sour
   const std::size_t heap0 = heap_in_use();
   std::unique_ptr<Runner> runner;
   try {
-    const double t0 = now_seconds();
+    const Stopwatch watch;
     runner = make_runner(Method::exact, mesh.mesh, config.seed);
-    r.precompute_s = now_seconds() - t0;
+    r.precompute_s = config.cpu_clock ? watch.cpu() : watch.wall();
     for (std::size_t k = 0; k < sources.size(); ++k) {
       SourceRun sr;
       sr.source = sources[k];
       if (refs[k]) {
         sr.from_cache = true;
+        sr.reached = count_finite(*refs[k]);
       } else {
-        const std::uint64_t c0 = cycle_counter();
-        const double t0q = now_seconds();
-        Outcome o = runner->run(sources[k]);
-        sr.seconds.push_back(now_seconds() - t0q);
-        sr.cycles.push_back(double(cycle_counter() - c0));
+        Outcome o = timed_run(*runner, sources[k], config.cpu_clock, sr);
+        sr.reached = count_finite(o.distance);
         refs[k] = std::move(o.distance);
         if (config.cache) config.cache->store(mesh.hash, sources[k], *refs[k]);
         char line[160];
@@ -90,9 +98,9 @@ MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std:
   std::size_t done = 0;
   try {
     const std::size_t heap0 = heap_in_use();
-    const double t0 = now_seconds();
+    const Stopwatch watch;
     std::unique_ptr<Runner> runner = make_runner(info.id, mesh.mesh, config.seed);
-    r.precompute_s = now_seconds() - t0;
+    r.precompute_s = config.cpu_clock ? watch.cpu() : watch.wall();
     r.state_bytes = runner->state_bytes();
     r.intrinsic_flips = runner->intrinsic_flips();
     for (std::size_t k = 0; k < sources.size(); ++k) {
@@ -100,6 +108,7 @@ MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std:
       sr.source = sources[k];
       {
         Outcome warm = runner->run(sources[k]);   // warm-up; deterministic, so its distances are the method's
+        sr.reached = count_finite(warm.distance);
         sr.stats = warm.stats;
         sr.has_stats = warm.has_stats;
         if (refs[k]) {
@@ -108,7 +117,7 @@ MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std:
         }
       }
       if (k == 0) r.solver_bytes = heap_delta(heap0);
-      time_runs(*runner, sources[k], config.repetitions, sr);
+      time_runs(*runner, sources[k], config.repetitions, config.cpu_clock, sr);
       r.sources.push_back(std::move(sr));
       ++done;
       step();

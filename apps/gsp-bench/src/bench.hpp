@@ -19,8 +19,11 @@ namespace gsp::bench {
 
 struct SourceRun {
   Index source = 0;
-  std::vector<double> seconds;   // the timed repetitions (empty for exact read from the cache)
+  std::vector<double> seconds;   // the timed repetitions on the chosen clock (empty for exact read from the cache)
+  std::vector<double> wall_seconds, cpu_seconds;   // the same runs on both clocks
   std::vector<double> cycles;    // time-stamp counter ticks of the same runs
+  std::size_t reached = 0;       // vertices given a finite distance (the work actually done:
+                                 // a source reaches its own component only)
   PropagationStats stats;
   bool has_stats = false;
   bool has_errors = false;       // an exact reference was available
@@ -31,7 +34,7 @@ struct SourceRun {
 struct MethodRun {
   MethodInfo method{};
   std::string skipped;                   // why the method refused the mesh; empty when it ran
-  double precompute_s = 0;               // the Runner's constructor
+  double precompute_s = 0;               // the Runner's constructor (chosen clock)
   std::size_t state_bytes = 0;           // GSP: GeodesicSolver::state_bytes
   double solver_bytes = -1;              // heap held by the prepared solver after a query (mallinfo2); < 0 unmeasured
   std::size_t intrinsic_flips = 0;
@@ -51,6 +54,7 @@ struct MeshRun {
 struct BenchConfig {
   std::vector<MethodInfo> methods;
   int repetitions = 5;
+  bool cpu_clock = false;                // time by thread CPU time instead of wall time
   std::uint64_t seed = 1;
   const train::ExactCache* cache = nullptr;
 };

@@ -50,6 +50,7 @@ cli::Json settings_json(const Options& o, const Settings& s) {
   j["sources"] = o.sources;
   j["seed"] = o.seed;
   j["repetitions"] = o.repetitions;
+  j["clock"] = o.clock;
   j["warm_up_runs"] = 1;
   j["shard"] = std::to_string(s.shard.index) + "/" + std::to_string(s.shard.count);
   j["cache"] = o.cache.empty() ? cli::Json() : cli::Json(o.cache);
@@ -77,6 +78,8 @@ void run(cli::Context& ctx, const Options& o) {
 
   Report report;
   report.settings = settings_json(o, settings);
+  report.repetitions = o.repetitions;
+  report.clock = o.clock;
   report.machine = machine_json();
   report.items = work_items(meshes, settings.shard);
   report.total_items = total_work_items(meshes);
@@ -86,6 +89,7 @@ void run(cli::Context& ctx, const Options& o) {
   BenchConfig config;
   config.methods = settings.methods;
   config.repetitions = o.repetitions;
+  config.cpu_clock = o.clock == "cpu";
   config.seed = o.seed;
   config.cache = &cache;
 

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <limits>
 
+#include <time.h>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <x86intrin.h>
 #define GSP_BENCH_RDTSC 1
@@ -20,6 +22,12 @@ namespace gsp::bench {
 
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+double thread_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 std::uint64_t cycle_counter() {

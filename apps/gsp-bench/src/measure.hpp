@@ -8,7 +8,16 @@
 
 namespace gsp::bench {
 
-double now_seconds();   // steady clock
+double now_seconds();          // steady clock (wall time)
+double thread_cpu_seconds();   // CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID)
+
+// Wall and thread CPU time since construction. On a shared machine the CPU clock leaves out
+// the time the thread waited for a core, which wall time counts (--clock cpu).
+struct Stopwatch {
+  double wall0 = now_seconds(), cpu0 = thread_cpu_seconds();
+  double wall() const { return now_seconds() - wall0; }
+  double cpu() const { return thread_cpu_seconds() - cpu0; }
+};
 
 // The time-stamp counter (rdtsc) on x86; 0 elsewhere (have_cycle_counter() says which). It
 // ticks at the CPU's nominal frequency whatever the current clock, so "cycles" are reference

@@ -21,6 +21,9 @@ void add_options(CLI::App& app, Options& o) {
       ->type_name("DIR");
   app.add_option("--shard", o.shard, "run only every n-th (mesh, source) work item, starting at i (default 0/1)")
       ->type_name("i/n");
+  app.add_option("--clock", o.clock,
+                 "what a query's time is: wall (default) or cpu (thread CPU time, for busy shared machines)")
+      ->check(CLI::IsMember({"wall", "cpu"}));
   app.add_flag("--no-table", o.no_table, "print no table on stdout");
   cli::add_load_options(app, o.load);
 }

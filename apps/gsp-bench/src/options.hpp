@@ -24,6 +24,7 @@ struct Options {
   std::string json, csv;           // "" = none, "-" = stdout
   std::string cache;               // exact-distance cache folder, "" = none
   std::string shard = "0/1";
+  std::string clock = "wall";      // wall | cpu
   bool no_table = false;
   cli::LoadOptions load;
 };

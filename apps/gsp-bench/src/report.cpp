@@ -62,21 +62,28 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
   const double nf = double(run.mesh->mesh.num_faces());
   s.precompute_s = m.ok() ? m.precompute_s : kNaN;
   s.query_s = query_seconds(m);
-  s.vertices_per_s = s.query_s > 0 ? nv / s.query_s : kNaN;
-  std::vector<double> cycles;
+  std::vector<double> throughput, cycles;
   double steps = 0, mre = 0, max_re = 0;
   std::size_t stats_sources = 0;
   for (const SourceRun& r : m.sources) {
-    if (!r.seconds.empty()) ++s.timed_sources;
-    if (!r.cycles.empty() && have_cycle_counter()) cycles.push_back(median(r.cycles));
-    if (r.has_stats && is_gsp(m.method.id)) steps += double(r.stats.update_steps), ++stats_sources;
+    if (!r.seconds.empty()) {
+      ++s.timed_sources;
+      const double t = median(r.seconds);
+      if (t > 0 && r.reached) throughput.push_back(double(r.reached) / t);
+    }
+    if (!r.cycles.empty() && have_cycle_counter() && r.reached) cycles.push_back(median(r.cycles) / double(r.reached));
+    if (r.has_stats && is_gsp(m.method.id)) {
+      const double faces = r.stats.faces_reached ? double(r.stats.faces_reached) : nf;
+      if (faces > 0) steps += double(r.stats.update_steps) / faces, ++stats_sources;
+    }
     if (r.has_errors) {
       mre += r.errors.mre, max_re = std::max(max_re, r.errors.max_re), ++s.error_sources;
       s.unreached += r.errors.unreached;
     }
   }
-  s.cycles_per_vertex = cycles.empty() ? kNaN : median(cycles) / nv;
-  s.update_steps_per_triangle = stats_sources && nf > 0 ? steps / double(stats_sources) / nf : kNaN;
+  s.vertices_per_s = median(throughput);
+  s.cycles_per_vertex = median(cycles);
+  s.update_steps_per_triangle = stats_sources ? steps / double(stats_sources) : kNaN;
   s.mre = s.error_sources ? mre / double(s.error_sources) : kNaN;
   s.max_re = s.error_sources ? max_re : kNaN;
   s.state_bytes_per_vertex = is_gsp(m.method.id) && m.ok() ? double(m.state_bytes) / nv : kNaN;
@@ -142,7 +149,10 @@ cli::Json to_json(const Report& report) {
         if (r.from_cache) sj["from_cache"] = true;
         sj["median_s"] = number_or_null(median(r.seconds));
         sj["seconds"] = cli::Json::array_of(r.seconds);
+        sj["wall_seconds"] = cli::Json::array_of(r.wall_seconds);
+        sj["cpu_seconds"] = cli::Json::array_of(r.cpu_seconds);
         sj["cycles"] = cli::Json::array_of(r.cycles);
+        sj["reached"] = r.reached;
         if (r.has_stats) {
           sj["update_steps"] = r.stats.update_steps;
           sj["face_updates"] = r.stats.face_updates;
@@ -166,13 +176,12 @@ cli::Json to_json(const Report& report) {
 std::string csv_header() {
   return "mesh,vertices,faces,method,status,sources,repetitions,precompute_s,query_s,vertices_per_s,"
          "cycles_per_vertex,update_steps_per_triangle,mre,max_re,unreached,state_bytes_per_vertex,"
-         "solver_bytes_per_vertex,vs_dijkstra,vs_heat,vs_heat_idt,vs_gsp,exact_cached\n";
+         "solver_bytes_per_vertex,vs_dijkstra,vs_heat,vs_heat_idt,vs_gsp,exact_cached,clock\n";
 }
 
 std::string to_csv(const Report& report) {
   std::string out = csv_header();
-  const cli::Json* reps = report.settings.find("repetitions");
-  const std::string repetitions = reps ? reps->dump(-1) : "";
+  const std::string repetitions = std::to_string(report.repetitions);
   for (const MeshRun& run : report.runs)
     for (const MethodRun& m : run.methods) {
       const Summary s = summarise(run, m);
@@ -185,7 +194,7 @@ std::string to_csv(const Report& report) {
              field(s.update_steps_per_triangle) + "," + field(s.mre) + "," + field(s.max_re) + "," +
              std::to_string(s.unreached) + "," + field(s.state_bytes_per_vertex) + "," +
              field(s.solver_bytes_per_vertex) + "," + field(s.vs_dijkstra) + "," + field(s.vs_heat) + "," +
-             field(s.vs_heat_idt) + "," + field(s.vs_gsp) + "," + std::to_string(cached) + "\n";
+             field(s.vs_heat_idt) + "," + field(s.vs_gsp) + "," + std::to_string(cached) + "," + report.clock + "\n";
     }
   return out;
 }

@@ -13,10 +13,10 @@ namespace gsp::bench {
 // NaN where a figure does not apply (no timing, no exact reference, not GSP, ...).
 struct Summary {
   double precompute_s;
-  double query_s;                    // median over sources of the per-source median
-  double vertices_per_s;             // vertices / query_s
-  double cycles_per_vertex;          // median over sources of the median ticks, / vertices
-  double update_steps_per_triangle;  // GSP: mean over sources of update_steps / faces
+  double query_s;                    // median over sources of the per-source median time
+  double vertices_per_s;             // median over sources of reached vertices / median time
+  double cycles_per_vertex;          // median over sources of median ticks / reached vertices
+  double update_steps_per_triangle;  // GSP: mean over sources of update_steps / faces reached
   double mre, max_re;                // mean over sources of the MRE; max over sources
   std::size_t unreached;             // vertices left at +inf that exact reaches (all sources)
   double state_bytes_per_vertex;     // GSP: propagation state (GeodesicSolver::state_bytes)
@@ -30,6 +30,8 @@ Summary summarise(const MeshRun& run, const MethodRun& method);
 
 struct Report {
   cli::Json settings;                // what the run was asked to do (methods, seed, ...)
+  int repetitions = 0;               // also in settings; repeated in every CSV row
+  std::string clock;                 // "wall" or "cpu"
   cli::Json machine;                 // CPU, counters used
   std::vector<WorkItem> items;       // this shard's work items
   std::size_t total_items = 0;       // before sharding
