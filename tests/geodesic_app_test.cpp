@@ -130,3 +130,35 @@ TEST(GeodesicApp, ErrorsFollowTheContract) {
 
 }  // namespace
 }  // namespace gsp::test
+
+namespace gsp::test {
+namespace {
+
+TEST(GeodesicApp, SeparateFieldsAndMatrixMatchSingleRuns) {
+  ScratchDir dir("geodesic");
+  const std::string base = quote(bin(kApp)) + " " + quote(sample());
+  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --separate --threads 2 -o " + quote((dir / "f.txt").string()), dir).exit_code, 0);
+  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --matrix -o " + quote((dir / "m.csv").string()), dir).exit_code, 0);
+  const Index vs[3] = {5, 77, 300};
+  const std::vector<std::string> rows = lines(slurp(dir / "m.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_EQ(run(base + " --source-vertex " + std::to_string(vs[i]) + " -o " + quote((dir / "one.txt").string()), dir).exit_code, 0);
+    const auto one = io::read_values_txt((dir / "one.txt").string());
+    const auto sep = io::read_values_txt((dir / ("f-" + std::to_string(i) + ".txt")).string());
+    ASSERT_EQ(sep, one) << "field " << i;
+    std::stringstream row(rows[i]);
+    for (int j = 0; j < 3; ++j) {
+      std::string cell;
+      std::getline(row, cell, ',');
+      EXPECT_NEAR(std::stod(cell), one[vs[j]], 1e-6 * (1 + one[vs[j]]));
+    }
+  }
+  // The modes exclude each other, need vertex sources and a text output.
+  EXPECT_EQ(run(base + " --source-vertex 1,2 --separate --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
+  EXPECT_EQ(run(base + " --source-point 0,0,0 --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
+  EXPECT_EQ(run(base + " --source-vertex 1,2 --matrix -o " + quote((dir / "x.ply").string()), dir).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace gsp::test

@@ -1,10 +1,12 @@
 // gsp-geodesic: geodesic distances on a triangle mesh from vertices, surface points or points
 // inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
+#include "batch_output.hpp"
 #include "options.hpp"
 #include "output.hpp"
 #include "sources.hpp"
 
 #include <gsp/cli/app.hpp>
+#include <gsp/batch.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/dijkstra.hpp>
 #include <gsp/geodesics.hpp>
@@ -42,6 +44,32 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["update_steps_per_face"] = faces ? double(r.stats.update_steps) / double(faces) : 0.0;
 }
 
+// --separate: a field per source, written next to each other; --matrix: the distances between
+// the source vertices. Both run the queries in parallel (gsp::compute_many).
+void run_many(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, const ResolvedSources& src,
+              const GeodesicSolver& solver, const GeodesicOptions& go) {
+  const unsigned threads = resolve_threads(o.threads, src.sources.size());
+  ctx.settings()["threads"] = threads;
+  if (o.matrix) {
+    std::vector<Index> vertices;
+    for (const Source& s : src.sources) vertices.push_back(s.element);
+    const std::vector<double> m =
+        ctx.timer().time("compute", [&] { return distance_matrix(solver, vertices, go, threads); });
+    ctx.stats()["result"]["matrix_size"] = vertices.size();
+    ctx.timer().time("write", [&] { write_matrix(o.output, m, vertices.size()); });
+    return;
+  }
+  std::vector<std::vector<Source>> queries;
+  for (const Source& s : src.sources) queries.push_back({s});
+  const std::vector<GeodesicResult> fields =
+      ctx.timer().time("compute", [&] { return compute_many(solver, queries, go, threads); });
+  ctx.stats()["result"]["fields"] = fields.size();
+  ctx.timer().time("write", [&] {
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      write_field(numbered_path(o.output, i), in, fields[i].vertex_distance, fields[i].vertex_source, false, o.ascii);
+  });
+}
+
 void run(cli::Context& ctx, const Options& o) {
   render::RenderOptions preview;
   if (!o.png.empty()) {
@@ -55,8 +83,19 @@ void run(cli::Context& ctx, const Options& o) {
     preview.supersample = 2;
   }
   // Checked before any work, so a typo in the extension costs nothing.
-  cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::off, io::Format::gltf,
-                                io::Format::glb, io::Format::txt});
+  if (o.separate && o.matrix) throw cli::UsageError("--separate and --matrix exclude each other");
+  if ((o.separate || o.matrix) && o.method != "gsp") throw cli::UsageError("--separate and --matrix need --method gsp");
+  if ((o.separate || o.matrix) && !o.png.empty()) throw cli::UsageError("--png draws one field: not with --separate or --matrix");
+  if (o.matrix) {
+    const bool csv = o.output.size() >= 4 && o.output.compare(o.output.size() - 4, 4, ".csv") == 0;
+    if (!csv && io::format_from_path(o.output) != io::Format::txt)
+      throw cli::UsageError("--matrix writes .txt or .csv, not \"" + o.output + "\"");
+    if (!o.source_points.empty() || !o.source_faces.empty())
+      throw cli::UsageError("--matrix takes --source-vertex only");
+  } else {
+    cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::off, io::Format::gltf,
+                                  io::Format::glb, io::Format::txt});
+  }
   const Strategy strategy = parse_strategy(o.strategy);
   const Precision precision = parse_precision(o.precision);
   const VisibilityHeuristic heuristic = parse_heuristic(o.heuristic);
@@ -90,7 +129,6 @@ void run(cli::Context& ctx, const Options& o) {
     go.precision = precision;
     go.f = o.f;
     go.max_distance = max_distance;
-    result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, go); });
     ctx.settings()["strategy"] = o.strategy;
     ctx.settings()["precision"] = o.precision;
     ctx.settings()["heuristic"] = o.heuristic;
@@ -100,6 +138,11 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
     ctx.stats()["memory"]["state_bytes_per_vertex"] =
         in.mesh.num_vertices() ? double(solver.state_bytes(precision)) / double(in.mesh.num_vertices()) : 0.0;
+    if (o.separate || o.matrix) {
+      run_many(ctx, o, in, src, solver, go);
+      return;
+    }
+    result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, go); });
   }
   report_result(ctx, result, in.mesh.num_faces());
   const bool labels = o.labels || src.sources.size() > 1;

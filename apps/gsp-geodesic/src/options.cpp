@@ -42,6 +42,11 @@ void add_options(CLI::App& app, Options& o) {
                "propagate on the input's triangles, not on their intrinsic Delaunay flip");
   app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  app.add_flag("--separate", o.separate,
+               "one field per source (written to OUT-0.ext, OUT-1.ext, ...), computed in parallel");
+  app.add_flag("--matrix", o.matrix,
+               "the matrix of distances between the --source-vertex vertices (.txt: spaces, .csv: commas)");
+  app.add_option("--threads", o.threads, "threads for --separate / --matrix (default: all)");
   app.add_option("--png", o.png, "also write a preview picture: the field with iso-lines, sources in red")
       ->type_name("FILE.png");
   app.add_option("--view", o.view, "preview camera: azimuth,elevation in degrees (default 30,20)")

@@ -27,6 +27,9 @@ struct Options {
   bool input_faces = false;
   bool ascii = false;
   bool labels = false;
+  bool separate = false;                      // one field per source, OUT-<i>.<ext>
+  bool matrix = false;                        // the distance matrix between the source vertices
+  unsigned threads = 0;                       // for --separate / --matrix; 0: all hardware threads
   std::string png;                            // preview picture, empty: none
   std::string view = "30,20";                 // azimuth,elevation in degrees
   int png_size = 800;
