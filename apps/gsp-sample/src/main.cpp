@@ -1,0 +1,178 @@
+// gsp-sample: geodesic blue-noise sampling of a triangle mesh (paper Section 5.8): Poisson-disk
+// sampling by dart throwing with propagations bounded by the radius, or farthest-point
+// sampling; points written with their face, barycentric weights and face normal.
+#include "write_samples.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/load.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/render/render.hpp>
+#include <gsp/sampling/quality.hpp>
+#include <gsp/sampling/sampler.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace {
+
+using namespace gsp;
+
+struct Options {
+  std::string input, output, radius, mode = "poisson", png, view = "30,20";
+  std::size_t count = 0;
+  std::uint64_t seed = 1;
+  std::size_t max_rejections = 500;
+  std::size_t quality_samples = 0;
+  bool no_fill = false, ascii = false;
+  int png_size = 800;
+  cli::LoadOptions load;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("INPUT", o.input, "input mesh (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("-o,--output", o.output,
+                 "samples: .ply (normals, int face, float u, v), .glb/.gltf (_FACE, _U, _V), .obj "
+                 "(points and normals), .txt (x y z nx ny nz face u v per line)")
+      ->required();
+  app.add_option("--count", o.count, "number of samples (poisson: the radius is searched to meet it within 1%)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--radius", o.radius, "minimum geodesic distance between samples: model units, or \"2%\" "
+                 "of the bounding-box diagonal")->type_name("R");
+  app.add_option("--mode", o.mode, "poisson (default: dart throwing) or farthest (farthest-point sampling)")
+      ->check(CLI::IsMember({"poisson", "farthest"}));
+  app.add_option("--seed", o.seed, "random seed (same seed, same samples on every platform)");
+  app.add_option("--max-rejections", o.max_rejections,
+                 "poisson: stop after this many rejected candidates in a row (default 500)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--no-fill", o.no_fill, "poisson: skip the final pass that adds samples at uncovered vertices");
+  app.add_option("--quality-samples", o.quality_samples,
+                 "with --stats: measure the nearest-neighbour distance from this many samples (default all)");
+  app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  app.add_option("--png", o.png, "also write a picture: the mesh with the samples as spheres")->type_name("FILE.png");
+  app.add_option("--view", o.view, "picture camera: azimuth,elevation in degrees (default 30,20)")->type_name("AZ,EL");
+  app.add_option("--png-size", o.png_size, "picture width and height in pixels (default 800)")->check(CLI::Range(16, 8192));
+  cli::add_load_options(app, o.load);
+}
+
+// "0.5" (model units) or "2%" (of the bounding-box diagonal); returns the percentage as a
+// negative number so the caller can scale it once the mesh is read.
+double parse_radius(std::string text) {
+  const bool percent = !text.empty() && text.back() == '%';
+  if (percent) text.pop_back();
+  const double value = cli::parse_number(text, "--radius");
+  if (!(value > 0)) throw cli::UsageError("--radius: must be > 0");
+  return percent ? -value : value;
+}
+
+void report(cli::Context& ctx, const sampling::Sampler& sampler, const sampling::SamplingResult& result,
+            double compute_seconds) {
+  cli::Json& res = ctx.stats()["result"];
+  res["count"] = result.samples.size();
+  res["radius"] = result.radius;
+  res["radius_over_diagonal"] = result.radius / sampler.diagonal();
+  res["area"] = sampler.area();
+  res["seconds_per_sample"] = result.samples.empty() ? 0.0 : compute_seconds / double(result.samples.size());
+  if (result.stats.search_iterations) {
+    res["count_met"] = result.stats.count_met;
+    res["search_iterations"] = result.stats.search_iterations;
+  }
+  cli::Json& ops = ctx.operations();
+  ops["candidates"] = result.stats.candidates;
+  ops["rejected"] = result.stats.rejected;
+  ops["fill_samples"] = result.stats.fill_samples;
+  ops["propagations"] = result.stats.propagations;
+  ops["update_steps"] = result.stats.update_steps;
+  ops["faces_reached"] = result.stats.faces_reached;
+}
+
+void run(cli::Context& ctx, const Options& o) {
+  if ((o.count > 0) == !o.radius.empty()) throw cli::UsageError("give exactly one of --count and --radius");
+  const double radius_arg = o.radius.empty() ? 0.0 : parse_radius(o.radius);
+  render::RenderOptions preview;
+  if (!o.png.empty()) {
+    if (o.png.size() < 4 || o.png.substr(o.png.size() - 4) != ".png")
+      throw cli::UsageError("--png: \"" + o.png + "\" does not end in .png");
+    const std::vector<double> view = cli::parse_number_list(o.view, "--view");
+    if (view.size() != 2) throw cli::UsageError("--view: expected azimuth,elevation");
+    preview.azimuth = view[0], preview.elevation = view[1];
+    preview.width = preview.height = o.png_size;
+    preview.supersample = 2;
+  }
+  cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::gltf, io::Format::glb, io::Format::txt});
+
+  const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  auto build = ctx.timer().scope("build");
+  const sampling::Sampler sampler(in.mesh);
+  build.stop();
+  ctx.timer().add("layout", sampler.solver().timings().layout);
+
+  sampling::SamplingOptions so;
+  so.mode = o.mode == "farthest" ? sampling::Mode::farthest : sampling::Mode::poisson;
+  so.count = o.count;
+  so.radius = radius_arg < 0 ? -radius_arg / 100.0 * sampler.diagonal() : radius_arg;
+  so.seed = o.seed;
+  so.max_rejections = o.max_rejections;
+  so.fill_vertices = !o.no_fill;
+  ctx.settings()["mode"] = o.mode;
+  ctx.settings()["seed"] = o.seed;
+  if (o.count) ctx.settings()["count"] = o.count;
+  else ctx.settings()["radius"] = so.radius;
+  if (so.mode == sampling::Mode::poisson) {
+    ctx.settings()["max_rejections"] = o.max_rejections;
+    ctx.settings()["fill_vertices"] = so.fill_vertices;
+  }
+
+  sampling::SamplingResult result;
+  {
+    auto progress = ctx.progress("sampling");
+    so.progress = progress->callback();
+    result = ctx.timer().time("compute", [&] { return sampler.sample(so); });
+  }
+  report(ctx, sampler, result, ctx.timer().seconds("compute"));
+  if (result.stats.search_iterations && !result.stats.count_met)
+    ctx.note("--count " + std::to_string(o.count) + ": got " + std::to_string(result.samples.size()) +
+             " samples, the closest the radius search reached");
+
+  if (ctx.stats_requested()) {
+    sampling::QualityOptions qo;
+    qo.max_checked = o.quality_samples;
+    qo.seed = o.seed;
+    auto progress = ctx.progress("quality");
+    qo.progress = progress->callback();
+    const sampling::SamplingQuality q =
+        ctx.timer().time("quality", [&] { return sampling::measure_quality(sampler, result, qo); });
+    cli::Json& j = ctx.stats()["quality"];
+    j["samples_checked"] = q.samples_checked;
+    j["min_distance"] = q.min_distance;
+    j["min_distance_over_radius"] = q.min_distance_ratio;
+    j["coverage_radius"] = q.coverage_radius;
+    j["coverage_over_radius"] = q.coverage_ratio;
+    j["packing_radius"] = q.packing_radius;
+    j["normalized_radius"] = q.normalized_radius;
+  }
+
+  ctx.timer().time("write", [&] { sample_app::write_samples(o.output, result.samples, o.ascii); });
+  if (!o.png.empty())
+    ctx.timer().time("preview", [&] {
+      render::Scene scene;
+      scene.mesh = in.mesh;
+      for (const sampling::Sample& s : result.samples) scene.points.push_back(s.position);
+      scene.point_radius = 0.2 * result.radius;
+      if (!(scene.point_radius > 0) || !std::isfinite(scene.point_radius)) scene.point_radius = 0;
+      render::write_png(o.png, render::render(scene, preview));
+    });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  return gsp::cli::run_app(
+      argc, argv, "gsp-sample",
+      "Geodesic blue-noise (Poisson-disk) or farthest-point sampling of a triangle mesh.",
+      [&](CLI::App& app) { add_options(app, options); },
+      [&](gsp::cli::Context& ctx) { run(ctx, options); });
+}

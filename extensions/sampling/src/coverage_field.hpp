@@ -1,0 +1,72 @@
+#pragma once
+// The running distance-to-nearest-sample field of Poisson-disk sampling: per vertex the
+// minimum over the bounded runs so far, and per face the virtual sources (paper Fig. 7c) of
+// every run that reached it closely enough, so the distance at any point of a face is
+// min over them of sigma + |p - S|. A linked list per face in one pool: faces far from
+// every sample cost one index, and a face is near only a bounded number of samples that are
+// r apart.
+#include <gsp/geodesics.hpp>
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace gsp::sampling::detail {
+
+class CoverageField {
+ public:
+  // `referenced` marks the vertices used by a face; only those count as uncovered.
+  CoverageField(std::size_t num_faces, const std::vector<bool>& referenced, double radius);
+
+  // True when the run (from a candidate) reaches no earlier sample closer than `radius`
+  // within the faces whose centroid is within `keep_face_distance`. GSP's distance from a
+  // to b and from b to a can differ by several percent on coarse meshes (one virtual source
+  // per face), so the candidate test checks both directions: the field at the candidate
+  // (earlier runs) before its run, this after it.
+  bool clear_of_samples(const GeodesicResult& run, const TriangleMesh& mesh, double radius,
+                        double keep_face_distance) const;
+  // Registers a sample at (face, barycentric) for clear_of_samples.
+  void add_sample(Index face, const std::array<double, 3>& barycentric);
+
+  // Merges one run: vertex minimum everywhere it reached; face virtual sources where the
+  // face centroid is within `keep_face_distance` (a point within r of the source lies in
+  // a face whose centroid is within r + the longest edge). Cost: one pass over the
+  // full-size result arrays (compute() returns them full size).
+  void merge(const GeodesicResult& run, double keep_face_distance);
+
+  // Distance from the point p of face f to the nearest sample so far (+inf if none near).
+  double distance_at(Index face, Vec3 p) const {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) {
+      const double d = pool_[e].sigma + distance(p, pool_[e].position);
+      if (d < best) best = d;
+    }
+    return best;
+  }
+
+  const std::vector<double>& vertex() const { return vertex_; }
+  std::size_t uncovered() const { return uncovered_; }        // referenced vertices at >= r
+  std::size_t referenced_count() const { return referenced_count_; }
+
+ private:
+  struct Entry {
+    Vec3 position;
+    double sigma;
+    std::int32_t next;
+  };
+  std::vector<double> vertex_;
+  std::vector<std::int32_t> head_;
+  std::vector<Entry> pool_;
+  struct SampleEntry {
+    std::array<double, 3> barycentric;
+    std::int32_t next;
+  };
+  std::vector<std::int32_t> sample_head_;   // per face: first sample in it, -1 if none
+  std::vector<SampleEntry> samples_;
+  const std::vector<bool>& referenced_;
+  double radius_;
+  std::size_t uncovered_ = 0, referenced_count_ = 0;
+};
+
+}  // namespace gsp::sampling::detail

@@ -1,0 +1,122 @@
+// Sampler set-up, option checks, and Poisson-disk sampling at a given radius.
+#include "coverage_field.hpp"
+
+#include <gsp/errors.hpp>
+#include <gsp/sampling/sampler.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace gsp::sampling {
+
+Sampler::Sampler(const TriangleMesh& mesh, const SolverOptions& options)
+    : mesh_(mesh), solver_(mesh, options), points_(mesh) {
+  referenced_.assign(mesh.num_vertices(), false);
+  vertex_face_.assign(mesh.num_vertices(), kInvalidIndex);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    if (triangle_area(mesh, Index(f)) <= 0) continue;   // a sample there would have no normal
+    for (int i = 0; i < 3; ++i) {
+      referenced_[t[i]] = true;
+      if (vertex_face_[t[i]] == kInvalidIndex) vertex_face_[t[i]] = Index(f);
+      longest_edge_ = std::max(longest_edge_, distance(mesh.positions[t[i]], mesh.positions[t[(i + 1) % 3]]));
+    }
+  }
+  Vec3 lo = mesh.positions.front(), hi = lo;
+  for (const Vec3& p : mesh.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  diagonal_ = distance(lo, hi);
+}
+
+double packing_radius(double area, std::size_t count) {
+  return count ? std::sqrt(area / (2 * std::sqrt(3.0) * double(count))) : 0.0;
+}
+
+SamplingResult Sampler::sample(const SamplingOptions& options) const {
+  const bool by_radius = options.radius != 0, by_count = options.count != 0;
+  if (by_radius == by_count) throw InvalidInput("sampling: give exactly one of a radius and a count");
+  if (by_radius && !(std::isfinite(options.radius) && options.radius > 0))
+    throw InvalidInput("sampling: the radius must be finite and > 0");
+  if (!(options.count_tolerance >= 0)) throw InvalidInput("sampling: the count tolerance must be >= 0");
+  if (options.mode == Mode::farthest) return farthest(options);
+  if (options.max_rejections == 0) throw InvalidInput("sampling: max_rejections must be > 0");
+  return by_radius ? poisson(options.radius, options) : poisson_count(options);
+}
+
+namespace {
+
+void count_run(SamplingStats& stats, const GeodesicResult& run) {
+  ++stats.propagations;
+  stats.update_steps += run.stats.update_steps;
+  stats.faces_reached += run.stats.faces_reached;
+}
+
+}  // namespace
+
+SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) const {
+  SamplingResult result;
+  result.radius = radius;
+  detail::CoverageField field(mesh_.num_faces(), referenced_, radius);
+  // Any point within r of a sample lies in a face whose centroid is within r + the longest
+  // edge, and every face on the geodesic to it too: expanding that far makes the stored
+  // virtual sources exact for all points that matter (max_distance = r alone could leave a
+  // face that holds points closer than r unreached when edges are long).
+  const double reach = radius + longest_edge_;
+  GeodesicOptions go;
+  go.max_distance = reach;
+  go.want_face_sources = true;
+
+  Random random(options.seed);
+  // Runs the candidate's propagation; keeps it unless it reaches an earlier sample closer
+  // than r (the other direction of the test, see CoverageField::clear_of_samples).
+  auto accept = [&](const Sample& s) {
+    const GeodesicResult run = solver_.compute({Source::in_face(s.face, s.barycentric)}, go);
+    count_run(result.stats, run);
+    if (!field.clear_of_samples(run, mesh_, radius, reach)) return false;
+    field.merge(run, reach);
+    field.add_sample(s.face, s.barycentric);
+    result.samples.push_back(s);
+    if (options.progress && field.referenced_count())
+      options.progress(1.0 - double(field.uncovered()) / double(field.referenced_count()));
+    return true;
+  };
+
+  std::size_t rejected_in_a_row = 0;
+  while (rejected_in_a_row < options.max_rejections && field.uncovered() > 0) {
+    const Sample s = points_.draw(mesh_, random);
+    ++result.stats.candidates;
+    if (field.distance_at(s.face, s.position) < radius) {
+      ++result.stats.rejected;
+      ++rejected_in_a_row;
+      continue;
+    }
+    if (!accept(s)) {
+      ++result.stats.rejected;
+      ++rejected_in_a_row;
+      continue;
+    }
+    rejected_in_a_row = 0;
+  }
+
+  if (options.fill_vertices && field.uncovered() > 0) {
+    std::vector<Index> order(mesh_.num_vertices());
+    std::iota(order.begin(), order.end(), Index(0));
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.below(i)]);
+    for (Index v : order) {
+      if (!referenced_[v] || field.vertex()[v] < radius) continue;
+      const Index f = vertex_face_[v];
+      const Triangle& t = mesh_.triangles[f];
+      std::array<double, 3> b{0, 0, 0};
+      b[t[0] == v ? 0 : (t[1] == v ? 1 : 2)] = 1;
+      if (accept(make_sample(mesh_, f, b))) ++result.stats.fill_samples;
+    }
+  }
+  result.coverage = field.vertex();
+  return result;
+}
+
+}  // namespace gsp::sampling

@@ -1,0 +1,93 @@
+// Quality figures: nearest-neighbour distances with propagations bounded by 2r, the
+// coverage radius with one propagation from all samples, and Lagae and Dutre's normalised
+// radius.
+#include <gsp/errors.hpp>
+#include <gsp/sampling/quality.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace gsp::sampling {
+
+SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& result,
+                                const QualityOptions& options) {
+  const TriangleMesh& mesh = sampler.mesh();
+  const std::vector<Sample>& samples = result.samples;
+  if (samples.empty()) throw InvalidInput("quality: no samples");
+  for (const Sample& s : samples)
+    if (s.face >= mesh.num_faces()) throw InvalidInput("quality: a sample names a face that does not exist");
+  const double r = result.radius;
+  SamplingQuality q;
+
+  // Samples grouped by face (CSR), so each bounded run looks only at the faces it reached
+  // that hold a sample.
+  std::vector<Index> begin(mesh.num_faces() + 1, 0), by_face(samples.size());
+  for (const Sample& s : samples) ++begin[s.face + 1];
+  std::partial_sum(begin.begin(), begin.end(), begin.begin());
+  {
+    std::vector<Index> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < samples.size(); ++i) by_face[fill[samples[i].face]++] = Index(i);
+  }
+  std::vector<Index> faces_with_samples;
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    if (begin[f + 1] > begin[f]) faces_with_samples.push_back(Index(f));
+
+  std::vector<bool> is_checked(samples.size(), options.max_checked == 0 || options.max_checked >= samples.size());
+  if (!is_checked.empty() && !is_checked[0]) {
+    std::vector<Index> order(samples.size());
+    std::iota(order.begin(), order.end(), Index(0));
+    Random random(options.seed);
+    for (std::size_t i = 0; i < options.max_checked; ++i) {
+      std::swap(order[i], order[i + random.below(order.size() - i)]);
+      is_checked[order[i]] = true;
+    }
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  const double bound = std::isfinite(r) && r > 0 ? 2 * r : inf;
+  GeodesicOptions go;
+  go.max_distance = bound + sampler.longest_edge();   // see Sampler::poisson for the edge
+  go.want_face_sources = true;
+  q.min_distance = bound;
+  std::vector<double> coverage(mesh.num_vertices(), inf);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Sample& s = samples[i];
+    const GeodesicResult run = sampler.solver().compute({Source::in_face(s.face, s.barycentric)}, go);
+    for (std::size_t v = 0; v < coverage.size(); ++v) coverage[v] = std::min(coverage[v], run.vertex_distance[v]);
+    if (is_checked[i]) {
+      ++q.samples_checked;
+      for (Index f : faces_with_samples) {
+        if (!run.face_sources[f].reached()) continue;
+        for (Index j = begin[f]; j < begin[f + 1]; ++j)
+          if (by_face[j] != i)
+            q.min_distance = std::min(q.min_distance, run.distance_at(mesh, f, samples[by_face[j]].barycentric));
+      }
+    }
+    if (options.progress) options.progress(double(i + 1) / double(samples.size() + 1));
+  }
+  q.min_distance_ratio = r > 0 ? q.min_distance / r : 0.0;
+
+  const std::vector<bool>& used = sampler.referenced();
+  bool all_reached = true;
+  for (std::size_t v = 0; v < coverage.size(); ++v) all_reached &= !used[v] || std::isfinite(coverage[v]);
+  if (!all_reached) {
+    std::vector<Source> all;
+    all.reserve(samples.size());
+    for (const Sample& s : samples) all.push_back(Source::in_face(s.face, s.barycentric));
+    const GeodesicResult field = sampler.solver().compute(all);
+    for (std::size_t v = 0; v < coverage.size(); ++v)
+      if (!std::isfinite(coverage[v])) coverage[v] = field.vertex_distance[v];
+  }
+  for (std::size_t v = 0; v < coverage.size(); ++v)
+    if (used[v]) q.coverage_radius = std::max(q.coverage_radius, coverage[v]);
+  q.coverage_ratio = r > 0 ? q.coverage_radius / r : 0.0;
+  if (options.progress) options.progress(1.0);
+
+  q.area = sampler.area();
+  q.packing_radius = packing_radius(q.area, samples.size());
+  q.normalized_radius = q.packing_radius > 0 ? 0.5 * r / q.packing_radius : 0.0;
+  return q;
+}
+
+}  // namespace gsp::sampling

@@ -1,0 +1,182 @@
+// gsp::sampling: Poisson-disk and farthest-point sampling, checked on a closed genus-4 scan,
+// a shared remesh, a flat disk of equal area, and a thin-walled tube.
+#include "sampling_meshes.hpp"
+#include "test_data.hpp"
+
+#include <gsp/errors.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/sampling/quality.hpp>
+#include <gsp/sampling/sampler.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace gsp;
+using sampling::Sampler;
+using sampling::SamplingOptions;
+
+TriangleMesh fertility() {
+  return io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+}
+
+// Independent check of the separation: propagations in double precision from every k-th
+// sample, bounded by 2r, read at every other sample.
+double min_separation(const TriangleMesh& mesh, const sampling::SamplingResult& result, std::size_t stride) {
+  GeodesicSolver solver(mesh);
+  GeodesicOptions go;
+  go.precision = Precision::double_precision;
+  go.want_face_sources = true;
+  go.max_distance = 2 * result.radius;
+  double best = go.max_distance;
+  for (std::size_t i = 0; i < result.samples.size(); i += stride) {
+    const auto& s = result.samples[i];
+    const GeodesicResult run = solver.compute({Source::in_face(s.face, s.barycentric)}, go);
+    for (std::size_t j = 0; j < result.samples.size(); ++j)
+      if (j != i) best = std::min(best, run.distance_at(mesh, result.samples[j].face, result.samples[j].barycentric));
+  }
+  return best;
+}
+
+std::size_t disk_count(double area, double radius, std::uint64_t seed) {
+  const double R = std::sqrt(area / std::acos(-1.0));
+  const TriangleMesh disk = test::flat_disk(R, int(std::ceil(3 * R / radius)));
+  Sampler sampler(disk);
+  SamplingOptions o;
+  o.radius = radius;
+  o.seed = seed;
+  return sampler.sample(o).samples.size();
+}
+
+void check_poisson(const TriangleMesh& mesh, double fraction_of_diagonal) {
+  Sampler sampler(mesh);
+  SamplingOptions o;
+  o.radius = fraction_of_diagonal * sampler.diagonal();
+  const auto result = sampler.sample(o);
+  ASSERT_GT(result.samples.size(), 50u);
+  EXPECT_DOUBLE_EQ(result.radius, o.radius);
+  // No two samples closer than 0.95 r (independent double-precision runs from a subset).
+  EXPECT_GE(min_separation(mesh, result, 7), 0.95 * o.radius);
+  // Every vertex within 2r of a sample (in fact within r: the fill pass).
+  const auto q = sampling::measure_quality(sampler, result);
+  EXPECT_LE(q.coverage_radius, 2 * o.radius);
+  EXPECT_GE(q.min_distance_ratio, 0.95);
+  EXPECT_GT(q.normalized_radius, 0.6);   // Lagae and Dutre: good Poisson-disk sets 0.65 .. 0.85
+  EXPECT_LT(q.normalized_radius, 0.9);
+  // The count matches a flat disk of the same area within 10% (curvature and the disk's
+  // boundary shift it by a few percent at this radius).
+  const double flat = double(disk_count(sampler.area(), o.radius, 1));
+  EXPECT_NEAR(double(result.samples.size()) / flat, 1.0, 0.10) << result.samples.size() << " vs " << flat;
+  // Samples are where they say they are.
+  for (const auto& s : result.samples) {
+    const auto again = sampling::make_sample(mesh, s.face, s.barycentric);
+    ASSERT_EQ(again.position, s.position);
+    ASSERT_NEAR(norm(s.normal), 1.0, 1e-9);
+  }
+}
+
+TEST(SamplingPoisson, FertilityIsBlueNoise) { check_poisson(fertility(), 0.02); }
+
+TEST(SamplingPoisson, ArmadilloIsBlueNoise) {
+  if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
+  check_poisson(io::read_mesh(test::shared_mesh("armadillo_remeshed.obj")).mesh, 0.03);
+}
+
+TEST(SamplingPoisson, ThinWalledTubeFilledOnBothSheets) {
+  // Sheets 0.02 apart, r = 0.1: a Euclidean test would leave one sheet almost empty.
+  const TriangleMesh tube = test::flattened_tube(4.0, 1.0, 0.02, 120, 96);
+  Sampler sampler(tube);
+  SamplingOptions o;
+  o.radius = 0.1;
+  const auto result = sampler.sample(o);
+  std::size_t top = 0, bottom = 0, close_pairs = 0;
+  for (const auto& s : result.samples) (s.position.z > 0 ? top : bottom) += 1;
+  for (const auto& a : result.samples)
+    for (const auto& b : result.samples)
+      if (a.position.z > 0.005 && b.position.z < -0.005 && distance(a.position, b.position) < 0.5 * o.radius)
+        ++close_pairs;
+  const double flat = double(disk_count(sampler.area(), o.radius, 1));
+  EXPECT_NEAR(double(result.samples.size()) / flat, 1.0, 0.10) << result.samples.size() << " vs " << flat;
+  EXPECT_NEAR(double(top) / double(bottom), 1.0, 0.1);
+  EXPECT_GT(close_pairs, result.samples.size() / 20);   // sheets sampled independently
+  EXPECT_GE(min_separation(tube, result, 11), 0.95 * o.radius);
+}
+
+TEST(SamplingPoisson, SameSeedSameSamples) {
+  const TriangleMesh mesh = fertility();
+  Sampler sampler(mesh);
+  SamplingOptions o;
+  o.radius = 0.04 * sampler.diagonal();
+  const auto a = sampler.sample(o), b = sampler.sample(o);
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  for (std::size_t i = 0; i < a.samples.size(); ++i) {
+    EXPECT_EQ(a.samples[i].face, b.samples[i].face);
+    EXPECT_EQ(a.samples[i].barycentric, b.samples[i].barycentric);
+  }
+  o.seed = 2;
+  const auto c = sampler.sample(o);
+  EXPECT_NE(a.samples[0].position, c.samples[0].position);
+  // The first sample of seed 1 is fixed by our own PRNG: the same on every platform.
+  EXPECT_EQ(a.samples[0].face, 6386u);
+}
+
+TEST(SamplingPoisson, CountIsMetWithinOnePercent) {
+  const TriangleMesh mesh = fertility();
+  Sampler sampler(mesh);
+  for (std::size_t n : {300u, 1000u}) {
+    SamplingOptions o;
+    o.count = n;
+    const auto r = sampler.sample(o);
+    EXPECT_TRUE(r.stats.count_met);
+    EXPECT_LE(std::abs(double(r.samples.size()) - double(n)), 0.01 * double(n)) << r.samples.size();
+    EXPECT_GT(r.stats.search_iterations, 0);
+  }
+}
+
+TEST(SamplingFarthest, CountAndSeparation) {
+  const TriangleMesh mesh = fertility();
+  Sampler sampler(mesh);
+  SamplingOptions o;
+  o.mode = sampling::Mode::farthest;
+  o.count = 200;
+  const auto r = sampler.sample(o);
+  ASSERT_EQ(r.samples.size(), 200u);
+  // Farthest-point: no two samples closer than the last insertion distance, and every
+  // vertex within it (the next sample would have been farther).
+  const auto q = sampling::measure_quality(sampler, r);
+  EXPECT_GE(q.min_distance_ratio, 0.999);
+  EXPECT_LE(q.coverage_ratio, 1.001);
+  EXPECT_GE(min_separation(mesh, r, 5), 0.95 * r.radius);
+  // By radius: stops once every vertex is within it.
+  SamplingOptions by_r;
+  by_r.mode = sampling::Mode::farthest;
+  by_r.radius = r.radius;
+  const auto r2 = sampler.sample(by_r);
+  EXPECT_NEAR(double(r2.samples.size()), 200.0, 2.0);
+}
+
+TEST(SamplingOptions, ContradictionsThrow) {
+  const TriangleMesh mesh = test::flat_disk(1.0, 4);
+  Sampler sampler(mesh);
+  SamplingOptions o;
+  EXPECT_THROW(sampler.sample(o), InvalidInput);   // neither radius nor count
+  o.radius = 0.1;
+  o.count = 10;
+  EXPECT_THROW(sampler.sample(o), InvalidInput);   // both
+  o.count = 0;
+  o.radius = std::nan("");
+  EXPECT_THROW(sampler.sample(o), InvalidInput);
+  TriangleMesh flat_line;
+  flat_line.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+  flat_line.triangles = {{0, 1, 2}};
+  EXPECT_THROW(Sampler{flat_line}, InvalidInput);   // no area
+}
+
+TEST(SamplingQuality, PackingRadiusClosedForm) {
+  // Hexagonal packing of N discs: A = N * 2 sqrt(3) r^2.
+  EXPECT_NEAR(sampling::packing_radius(2 * std::sqrt(3.0) * 100, 100), 1.0, 1e-12);
+}
+
+}  // namespace
