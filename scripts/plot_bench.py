@@ -14,6 +14,7 @@ draws with the headless Agg backend.
 """
 import argparse
 import csv
+import itertools
 import math
 import sys
 from collections import OrderedDict
@@ -40,6 +41,12 @@ METHOD_STYLE = OrderedDict([
 ])
 
 
+# Columns merged across shards as source-weighted means. vertices_per_s is taken from the CSV,
+# not recomputed from the mesh size: it counts the vertices a query reaches (its component).
+AVERAGED = ("precompute_s", "query_s", "vertices_per_s", "cycles_per_vertex", "update_steps_per_triangle", "mre",
+            "state_bytes_per_vertex", "solver_bytes_per_vertex")
+
+
 def number(text):
     return float(text) if text not in ("", None) else math.nan
 
@@ -58,8 +65,7 @@ def read_rows(paths):
                 if row["status"] != "ok":
                     r["status"] = row["status"]
                 r["sources"] += n
-                for col in ("precompute_s", "query_s", "cycles_per_vertex", "update_steps_per_triangle", "mre",
-                            "state_bytes_per_vertex", "solver_bytes_per_vertex"):
+                for col in AVERAGED:
                     v = number(row[col])
                     if not math.isnan(v):
                         s, w = r["_w"].get(col, (0.0, 0))
@@ -70,11 +76,8 @@ def read_rows(paths):
     for r in merged.values():
         for col, (s, w) in r.pop("_w").items():
             r[col] = s / w if w else math.nan
-        for col in ("precompute_s", "query_s", "cycles_per_vertex", "update_steps_per_triangle", "mre",
-                    "state_bytes_per_vertex", "solver_bytes_per_vertex"):
+        for col in AVERAGED:
             r.setdefault(col, math.nan)
-        q = r["query_s"]
-        r["vertices_per_s"] = r["vertices"] / q if q > 0 else math.nan
     return merged
 
 
@@ -94,9 +97,9 @@ def plot(rows, out, title):
     methods = [m for m in METHOD_STYLE if any(k[1] == m for k in rows)]
     methods += sorted({k[1] for k in rows} - set(methods))
     fig, ax = plt.subplots(figsize=(7.0, 4.4), dpi=100)
-    extra_colours = iter(plt.rcParams["axes.prop_cycle"].by_key()["color"])
+    extra_colours = itertools.cycle(plt.rcParams["axes.prop_cycle"].by_key()["color"])
     for method in methods:
-        colour, marker = METHOD_STYLE.get(method, (next(extra_colours), "o"))
+        colour, marker = METHOD_STYLE[method] if method in METHOD_STYLE else (next(extra_colours), "o")
         pts = [(r["vertices_per_s"], r["mre"] * 100) for k, r in rows.items()
                if k[1] == method and r["vertices_per_s"] > 0 and r["mre"] > 0]
         if not pts:
