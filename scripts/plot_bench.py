@@ -98,17 +98,18 @@ def plot(rows, out, title):
     methods += sorted({k[1] for k in rows} - set(methods))
     fig, ax = plt.subplots(figsize=(7.0, 4.4), dpi=100)
     extra_colours = itertools.cycle(plt.rcParams["axes.prop_cycle"].by_key()["color"])
-    for method in methods:
+    for rank, method in enumerate(methods):
+        z = 3 + len(methods) - rank   # the first methods (GSP as shipped) on top
         colour, marker = METHOD_STYLE[method] if method in METHOD_STYLE else (next(extra_colours), "o")
         pts = [(r["vertices_per_s"], r["mre"] * 100) for k, r in rows.items()
                if k[1] == method and r["vertices_per_s"] > 0 and r["mre"] > 0]
         if not pts:
             continue
         xs, ys = zip(*pts)
-        ax.scatter(xs, ys, s=14, color=colour, marker=marker, alpha=0.45, linewidths=0)
+        ax.scatter(xs, ys, s=14, color=colour, marker=marker, alpha=0.55, linewidths=0, zorder=z)
         # The method's centre over all meshes (geometric means), large, with the legend entry.
         ax.scatter([geomean(xs)], [geomean(ys)], s=70, color=colour, marker=marker, edgecolors="black",
-                   linewidths=0.6, label=method)
+                   linewidths=0.6, label=method, zorder=z + len(methods))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("throughput (vertices per second, single-source query)")
