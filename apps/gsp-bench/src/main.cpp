@@ -97,7 +97,12 @@ void run(cli::Context& ctx, const Options& o) {
   const double total_steps = double(report.items.size() * settings.methods.size());
   std::size_t steps = 0;
   const StepFn step = [&] { progress->update(total_steps > 0 ? double(++steps) / total_steps : 1.0); };
-  const NoteFn note = [&](const std::string& line) { ctx.note(line); };
+  const NoteFn note = [&](const std::string& line) {
+    // Erase a drawn progress line first, so the note starts at the left margin; the next
+    // update draws the progress again.
+    if (progress->enabled() && !ctx.quiet()) std::fputs("\r\033[K", stderr);
+    ctx.note(line);
+  };
   {
     auto timed = ctx.timer().scope("compute");
     for (std::size_t m = 0; m < meshes.size(); ++m) {
