@@ -1,0 +1,145 @@
+#pragma once
+// Geodesic distances on point clouds by Geodesic Source Propagation (paper Section 4.4).
+// Each point carries a virtual source in its tangent plane (2D coordinates + sigma); the
+// sources travel over the k-nearest-neighbour graph, unfolded from one tangent plane into
+// the next, straight where the neighbour lies on the way to the source, bent (a new virtual
+// source at the neighbour) where it does not. docs/pointcloud.md states the rule.
+//
+//   gsp::pointcloud::PointCloudGeodesics solver(cloud);            // k-d tree, frames, graph
+//   auto r = solver.compute({gsp::pointcloud::PointSource::at_point(0)});
+//   r.distance[i]   // per input point, +inf where unreachable (another graph component)
+#include <gsp/mesh.hpp>
+#include <gsp/pointcloud/neighbour_graph.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace gsp::pointcloud {
+
+struct PointCloudOptions {
+  NeighbourOptions neighbours;      // k = 10 nearest neighbours by default
+  bool use_input_normals = true;    // else (or where a normal is zero/not finite) local PCA
+};
+
+// A source: an input point, or any position in space (see PositionSeeding). `offset` is an
+// initial distance added to everything the source reaches.
+struct PointSource {
+  enum class Kind : std::uint8_t { point, position };
+  Kind kind = Kind::point;
+  Index point = 0;
+  Vec3 position;
+  double offset = 0;
+
+  static PointSource at_point(Index i, double offset = 0) { return {Kind::point, i, {}, offset}; }
+  static PointSource at_position(Vec3 p, double offset = 0) { return {Kind::position, kInvalidIndex, p, offset}; }
+};
+
+enum class PositionSeeding : std::uint8_t {
+  neighbours,   // the k nearest points get their straight distance and the position as virtual source
+  snap,         // the nearest point becomes the source (distance 0 there)
+};
+
+enum class PointMethod : std::uint8_t {
+  gsp,        // virtual source propagation (the method)
+  dijkstra,   // shortest paths along the same graph's links (the baseline)
+};
+
+struct PointGeodesicOptions {
+  PointMethod method = PointMethod::gsp;
+  // Speed limiter step (paper 4.2) in mean link lengths of the graph.
+  double f = 1.0;
+  // Points farther than this are not expanded and are reported as +inf.
+  double max_distance = std::numeric_limits<double>::infinity();
+  // Visibility (docs/pointcloud.md): propagation p -> q stays straight while the line from q
+  // to p's unfolded virtual source S passes within rho of p, with
+  //   rho = min(|p - q| sin(visibility_angle), hinge_area |p - q|^2 / |S - q|);
+  // beyond, the path bends at that distance from p. The second term bounds the area of the
+  // triangle (S, p, q), which is what the flat unfolding gets wrong on curved (saddle) parts.
+  // Smaller values bend more (over-estimate), larger ones cut more (under-estimate).
+  double visibility_angle_deg = 10.0;
+  double hinge_area = std::numeric_limits<double>::infinity();   // off by default
+  PositionSeeding seeding = PositionSeeding::neighbours;
+  bool want_virtual_sources = false;
+};
+
+// Where a point's geodesic comes from: the straight segment (in the point's tangent plane)
+// from the point to `position`, then `sigma` more.
+struct PointVirtualSource {
+  Vec3 position;                    // 3D, in the point's tangent plane
+  double sigma = std::numeric_limits<double>::infinity();
+  Index source = kInvalidIndex;     // index into the sources list
+};
+
+// What the preparation found and how long it took.
+struct PointCloudStats {
+  std::size_t points = 0;               // input points
+  std::size_t unique_points = 0;        // after merging bit-identical positions
+  std::size_t duplicates = 0;           // points merged into an earlier identical one
+  std::size_t components = 0;           // connected components of the neighbour graph
+  std::size_t largest_component = 0;    // unique points in the largest one
+  std::size_t links = 0;                // undirected links of the graph
+  std::size_t normals_from_input = 0;   // unique points whose frame uses the file's normal
+  std::size_t normals_estimated = 0;    // unique points whose normal came from local PCA
+  double mean_link_length = 0;
+  double seconds_tree = 0;              // k-d tree
+  double seconds_graph = 0;             // neighbour queries + symmetric CSR
+  double seconds_frames = 0;            // normals and tangent frames
+};
+
+struct PointPropagationStats {
+  std::uint64_t update_steps = 0;   // candidate evaluations (one per link tried)
+  std::uint64_t updates = 0;        // accepted (a point got a shorter distance)
+  std::uint64_t bends = 0;          // accepted updates that created a new virtual source
+  std::uint64_t enqueued = 0;
+  std::uint64_t stale_skipped = 0;
+  std::uint64_t iterations = 0;     // speed-limiter rounds (heap pops for Dijkstra)
+  std::uint64_t points_reached = 0; // input points with a finite distance
+  double seconds = 0;
+};
+
+struct PointCloudResult {
+  std::vector<double> distance;   // per input point; +inf where unreachable or beyond max_distance
+  std::vector<Index> source;      // per input point: nearest source, kInvalidIndex if none
+  std::vector<PointVirtualSource> virtual_sources;   // per input point, with want_virtual_sources
+  PointPropagationStats stats;
+};
+
+// Prepares a cloud once (k-d tree, merged duplicates, neighbour graph, tangent frames) and
+// answers any number of queries. Thread-safe for concurrent compute() calls.
+class PointCloudGeodesics {
+ public:
+  // normals: empty, or one per point (zero or non-finite entries fall back to PCA).
+  // Throws InvalidInput for non-finite positions, a normals count mismatch or bad options.
+  explicit PointCloudGeodesics(const std::vector<Vec3>& points, const std::vector<Vec3>& normals = {},
+                               const PointCloudOptions& options = {});
+  // Uses mesh.positions and mesh.normals; triangles, if any, are ignored.
+  explicit PointCloudGeodesics(const TriangleMesh& cloud, const PointCloudOptions& options = {});
+  ~PointCloudGeodesics();
+  PointCloudGeodesics(PointCloudGeodesics&&) noexcept;
+  PointCloudGeodesics& operator=(PointCloudGeodesics&&) noexcept;
+
+  // Throws InvalidInput for a missing point, a non-finite position or offset, or a position
+  // source on an empty cloud.
+  PointCloudResult compute(const std::vector<PointSource>& sources, const PointGeodesicOptions& options = {}) const;
+
+  std::size_t num_points() const;
+  const PointCloudStats& stats() const;
+  Index nearest_point(Vec3 position) const;        // kInvalidIndex on an empty cloud
+  std::vector<Index> component_ids() const;        // per input point (duplicates share theirs)
+  std::vector<Vec3> normals() const;               // per input point, unit, as used (unoriented if estimated)
+  const NeighbourGraph& graph() const;             // over the unique points (see unique_index)
+  const std::vector<Index>& unique_index() const;  // input point -> graph point
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One-off: prepare and compute.
+PointCloudResult point_cloud_geodesic_distances(const TriangleMesh& cloud, const std::vector<PointSource>& sources,
+                                                const PointGeodesicOptions& options = {},
+                                                const PointCloudOptions& cloud_options = {});
+
+}  // namespace gsp::pointcloud

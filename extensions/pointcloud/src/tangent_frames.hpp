@@ -1,0 +1,22 @@
+#pragma once
+// Per-point tangent frames: a unit normal (the input's, or the direction of least variance of
+// the point's k nearest neighbours) and two unit tangents completing a right-handed frame.
+// Estimated normals are unoriented; propagation aligns them per link (see docs).
+#include <gsp/types.hpp>
+
+#include "kd_tree.hpp"
+
+#include <vector>
+
+namespace gsp::pointcloud::detail {
+
+struct TangentFrames {
+  std::vector<Vec3> normal, t1, t2;
+  std::size_t from_input = 0, estimated = 0;
+};
+
+// input_normals: empty or one per point; entries that are zero or not finite are estimated.
+TangentFrames tangent_frames(const std::vector<Vec3>& points, const std::vector<Vec3>& input_normals,
+                             const PointTree& tree, unsigned k);
+
+}  // namespace gsp::pointcloud::detail

@@ -1,0 +1,11 @@
+# Tests of gsp::pointcloud (geodesics on point clouds) and of triangle soups through the mesh
+# core (split, flipped, welded). The accuracy test compares with exact geodesics (CGAL) when
+# gsp::reference exists, else with mesh GSP on the same vertices.
+gsp_test(pointcloud_graph_test SOURCES pointcloud_graph_test.cpp DEPS gsp::pointcloud)
+gsp_test(pointcloud_robustness_test SOURCES pointcloud_robustness_test.cpp DEPS gsp::pointcloud gsp::io)
+gsp_test(pointcloud_accuracy_test SOURCES pointcloud_accuracy_test.cpp DEPS gsp::pointcloud gsp::io)
+if(TARGET gsp::reference)
+  target_link_libraries(pointcloud_accuracy_test PRIVATE gsp::reference)
+  target_compile_definitions(pointcloud_accuracy_test PRIVATE GSP_HAVE_EXACT_REFERENCE=1)
+endif()
+gsp_test(pointcloud_soup_test SOURCES pointcloud_soup_test.cpp DEPS gsp::core gsp::io)
