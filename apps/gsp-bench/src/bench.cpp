@@ -79,13 +79,15 @@ MethodRun exact_references(const BenchMesh& mesh, const std::vector<Index>& sour
       step();
     }
     r.solver_bytes = heap_delta(heap0);   // includes the sequence tree of the last source computed
+  } catch (const IoError&) {   // the cache could not be written: a failure of the run, not of CGAL
+    throw;
   } catch (const Error& e) {   // TopologyError, InvalidInput: CGAL cannot take this mesh
     r.skipped = e.what();
   }
   if (!r.ok()) {
-    r.sources.clear();
     note(mesh.name + ": exact skipped: " + r.skipped);
-    for (std::size_t k = 0; k < sources.size(); ++k) step();
+    for (std::size_t k = r.sources.size(); k < sources.size(); ++k) step();
+    r.sources.clear();
   }
   return r;
 }
