@@ -1,4 +1,5 @@
 #include "intrinsic_geometry.hpp"
+#include "goal_directed.hpp"
 #include "propagation.hpp"
 #include "virtual_source.hpp"
 #include "intrinsic_delaunay.hpp"
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <string>
 
 namespace gsp {
@@ -231,6 +233,12 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
     throw InvalidInput("strategy parameters f, f0, f1 must be positive");
   if (std::isnan(options.max_distance) || options.max_distance < 0)
     throw InvalidInput("max_distance must be >= 0");
+  if (options.goal_directed && options.targets.empty())
+    throw InvalidInput("goal_directed (A*) needs at least one target");
+  for (Index t : options.targets)
+    if (t >= impl_->mesh.num_vertices())
+      throw InvalidInput("target vertex " + std::to_string(t) + " does not exist (" +
+                         std::to_string(impl_->mesh.num_vertices()) + " vertices)");
   // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
   // per-face virtual sources need the input faces.
   bool vertex_sources_only = true;
@@ -288,6 +296,13 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   result.stats.mean_edge_length = mean_edge;
   std::vector<QueueEntry<Real>> queue;
   queue.reserve(std::max<std::size_t>(64, nf / 4));
+  std::optional<detail::TargetSet<Real>> goal;   // only for runs with targets
+  if (!options.targets.empty()) {
+    std::vector<Index> targets(options.targets.size());
+    for (std::size_t i = 0; i < targets.size(); ++i) targets[i] = layout.vertex_rank[options.targets[i]];
+    goal.emplace(state.data(), tri.triangles, mesh.positions, tri.corner_begin, tri.corners, targets, scale,
+                 options.goal_directed);
+  }
 
   // Exact vertex values for vertex sources (a vertex in no usable face still gets its offset).
   std::vector<double> source_vertex_value(nv, std::numeric_limits<double>::infinity());
@@ -306,6 +321,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
       if (src.offset < source_vertex_value[v]) {
         source_vertex_value[v] = src.offset;
         source_vertex_label[v] = label;
+        if (goal) goal->vertex_value(v, Real(src.offset * scale));
       }
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
         const Index c = tri.corners[k];
@@ -339,6 +355,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   auto propagate = [&] {
     using detail::Postpone;
+    if (goal) return detail::run_targeted(step, queue, *goal, result.stats);
     switch (options.strategy) {
       case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, result.stats); break;
       case Strategy::static_postpone:

@@ -58,6 +58,14 @@ struct GeodesicOptions {
   // neighbourhood, not the mesh. Vertices farther than this are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
   bool want_face_sources = false;   // fill GeodesicResult::face_sources
+  // Targets (input vertex indices): when given, the propagation runs in a heap (the
+  // priority_queue strategy, whatever `strategy` says) and stops as soon as no queued face can
+  // still shorten a target's distance; the targets' distances are then final, the rest of the
+  // result covers only what was touched. With `goal_directed` (A*) the heap key is d_T plus a
+  // lower bound of the remaining distance (straight line from the face to the nearest target),
+  // so the front grows towards the targets instead of in every direction (paper Fig. 12a,b).
+  std::vector<Index> targets;
+  bool goal_directed = false;       // A*; needs targets
 };
 
 // The virtual source a face ended up with: the geodesic to any point p of the face is the

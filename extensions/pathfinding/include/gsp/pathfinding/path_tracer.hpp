@@ -1,0 +1,56 @@
+#pragma once
+// Tracing geodesic paths back through a GSP field's per-face virtual sources.
+//
+// Every reached face of a field computed with want_face_sources carries a virtual source S
+// (a 3D point in the face's plane) and sigma: the geodesic to any point of the face runs
+// straight (in the face's plane) to S, then sigma further. So a path is walked backwards: from
+// the end point straight towards the current face's S, across the exit edge into the
+// neighbour, on towards that face's S, ...; when the walk reaches S and S is a mesh vertex with
+// sigma > 0, the path turns there (a corner of the geodesic) and continues in the incident face
+// whose source explains the vertex's distance best; it ends at the real source.
+//
+//   gsp::GeodesicOptions o;
+//   o.want_face_sources = true;
+//   auto field = solver.compute({gsp::Source::at_vertex(s)}, o);
+//   gsp::pathfinding::PathTracer tracer(mesh);
+//   auto path = tracer.trace(field, gsp::pathfinding::Endpoint::at_vertex(t));
+#include <gsp/connectivity.hpp>
+#include <gsp/geodesics.hpp>
+#include <gsp/pathfinding/path.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace gsp::pathfinding {
+
+struct TraceOptions {
+  // Walk steps (face crossings and turns) before giving up; 0: 8 * faces + 64. Guards against
+  // cycles in an inconsistent field.
+  std::size_t max_steps = 0;
+};
+
+class PathTracer {
+ public:
+  // Builds the connectivity once. Keeps a reference to `mesh`: it must outlive the tracer.
+  explicit PathTracer(const TriangleMesh& mesh, const TraceOptions& options = {});
+
+  // The path from the field's nearest source to `end`. Throws InvalidInput when the field has
+  // no face sources or `end` is malformed, NoPath when `end` is not reached, gsp::Error when the
+  // walk cannot be completed (a cycle, max_steps exceeded, a walk off the boundary).
+  GeodesicPath trace(const GeodesicResult& field, const Endpoint& end) const;
+
+  // One field, many end points (one source to many targets). An end point the field does not
+  // reach gives an empty path (found() false) instead of NoPath.
+  std::vector<GeodesicPath> trace_all(const GeodesicResult& field, const std::vector<Endpoint>& ends) const;
+
+  const TriangleMesh& mesh() const { return mesh_; }
+  const Connectivity& connectivity() const { return conn_; }
+
+ private:
+  const TriangleMesh& mesh_;
+  Connectivity conn_;
+  TraceOptions options_;
+  double mean_edge_ = 1;
+};
+
+}  // namespace gsp::pathfinding
