@@ -162,3 +162,35 @@ TEST(GeodesicApp, SeparateFieldsAndMatrixMatchSingleRuns) {
 
 }  // namespace
 }  // namespace gsp::test
+
+namespace gsp::test {
+namespace {
+
+TEST(GeodesicApp, PointCloudDomain) {
+  ScratchDir dir("geodesic");
+  const std::string app = quote(bin(kApp));
+  // The mesh's vertices as a cloud: close to the mesh's own field.
+  ASSERT_EQ(run(app + " " + quote(sample()) + " --domain points --source-vertex 0 -o " + quote((dir / "p.txt").string()), dir).exit_code, 0);
+  ASSERT_EQ(run(app + " " + quote(sample()) + " --source-vertex 0 -o " + quote((dir / "m.txt").string()), dir).exit_code, 0);
+  const auto p = io::read_values_txt((dir / "p.txt").string());
+  const auto m = io::read_values_txt((dir / "m.txt").string());
+  ASSERT_EQ(p.size(), m.size());
+  double sum = 0;
+  for (std::size_t v = 1; v < p.size(); ++v) sum += std::abs(p[v] - m[v]) / m[v];
+  EXPECT_LT(sum / double(p.size() - 1), 0.03);
+  // A file without faces is a cloud by itself; --source-face makes no sense there.
+  if (have_shared_data()) {
+    const std::string kitten = quote(shared_mesh("kitten_points.xyz"));
+    const auto r = run(app + " " + kitten + " --source-point 0,0,0 -o " + quote((dir / "k.ply").string()) + " --stats -", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const JsonValue stats = parse_json(r.out);
+    EXPECT_EQ(stats["cloud"]["points"].num, 5210);
+    EXPECT_EQ(stats["result"]["points_reached"].num, 5210);
+    EXPECT_EQ(io::read_mesh((dir / "k.ply").string()).mesh.num_vertices(), 5210u);
+    EXPECT_EQ(run(app + " " + kitten + " --source-face 0:0.2,0.2 -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
+    EXPECT_EQ(run(app + " " + kitten + " --domain mesh --source-vertex 0 -o " + quote((dir / "x.txt").string()), dir).exit_code, 1);
+  }
+}
+
+}  // namespace
+}  // namespace gsp::test

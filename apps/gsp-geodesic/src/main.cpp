@@ -2,6 +2,7 @@
 // inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
 #include "batch_output.hpp"
 #include "options.hpp"
+#include "points.hpp"
 #include "output.hpp"
 #include "sources.hpp"
 
@@ -105,7 +106,14 @@ void run(cli::Context& ctx, const Options& o) {
     if (max_distance < 0) throw cli::UsageError("--max-distance: must be >= 0");
   }
 
-  const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  cli::LoadOptions load = o.load;
+  load.require_faces = o.domain == "mesh";   // auto and points accept a cloud
+  const cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
+  if (o.domain == "points" || (o.domain == "auto" && in.mesh.is_point_cloud())) {
+    if (!o.png.empty()) throw cli::UsageError("--png draws meshes: not with a point cloud");
+    run_points(ctx, o, in, max_distance);
+    return;
+  }
   const ResolvedSources src = resolve_sources(o, in);
   ctx.settings()["method"] = o.method;
   ctx.settings()["sources"] = src.sources.size();

@@ -10,7 +10,7 @@
 namespace gsp::geodesic_app {
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("INPUT", o.input, "input mesh (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("INPUT", o.input, "input mesh or point cloud (.ply .obj .off .stl .gltf .glb .xyz)")->required();
   app.add_option("-o,--output", o.output,
                  "output: .ply (float distance + quality + colours), .glb/.gltf (_DISTANCE + COLOR_0), "
                  ".obj/.off (colours), .txt (one distance per input vertex)")
@@ -42,6 +42,12 @@ void add_options(CLI::App& app, Options& o) {
                "propagate on the input's triangles, not on their intrinsic Delaunay flip");
   app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  app.add_option("--domain", o.domain,
+                 "mesh, points (the vertices as a point cloud, k nearest neighbours), or auto (default: "
+                 "points when the file has no faces)")
+      ->check(CLI::IsMember({"mesh", "points", "auto"}));
+  app.add_option("--neighbours", o.neighbours, "--domain points: neighbours per point (default 10)")
+      ->check(CLI::Range(2u, 200u));
   app.add_flag("--separate", o.separate,
                "one field per source (written to OUT-0.ext, OUT-1.ext, ...), computed in parallel");
   app.add_flag("--matrix", o.matrix,

@@ -27,6 +27,8 @@ struct Options {
   bool input_faces = false;
   bool ascii = false;
   bool labels = false;
+  std::string domain = "auto";                // mesh | points | auto (points when the file has no faces)
+  unsigned neighbours = 10;                   // --domain points: k nearest neighbours
   bool separate = false;                      // one field per source, OUT-<i>.<ext>
   bool matrix = false;                        // the distance matrix between the source vertices
   unsigned threads = 0;                       // for --separate / --matrix; 0: all hardware threads

@@ -1,0 +1,65 @@
+#include "points.hpp"
+
+#include "output.hpp"
+
+#include <gsp/cli/parse.hpp>
+#include <gsp/pointcloud/point_cloud_geodesics.hpp>
+
+#include <cmath>
+
+namespace gsp::geodesic_app {
+
+void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, double max_distance) {
+  if (!o.source_faces.empty()) throw cli::UsageError("--source-face needs faces: not with --domain points");
+  if (o.separate || o.matrix) throw cli::UsageError("--separate and --matrix work on meshes only");
+  pointcloud::PointCloudOptions po;
+  po.neighbours.k = o.neighbours;
+  const pointcloud::PointCloudGeodesics cloud =
+      ctx.timer().time("build", [&] { return pointcloud::PointCloudGeodesics(in.mesh, po); });
+
+  std::vector<pointcloud::PointSource> sources;
+  for (const std::string& arg : o.source_vertices)
+    for (Index file_point : cli::parse_index_list(arg, "--source-vertex"))
+      sources.push_back(pointcloud::PointSource::at_point(in.mesh_vertex(file_point)));
+  for (const std::string& arg : o.source_points)
+    sources.push_back(pointcloud::PointSource::at_position(cli::parse_vec3(arg, "--source-point")));
+  if (sources.empty()) throw cli::UsageError("no source: give --source-vertex or --source-point");
+
+  pointcloud::PointGeodesicOptions go;
+  go.method = o.method == "dijkstra" ? pointcloud::PointMethod::dijkstra : pointcloud::PointMethod::gsp;
+  go.max_distance = max_distance;
+  go.f = o.f;
+  const pointcloud::PointCloudResult r = ctx.timer().time("compute", [&] { return cloud.compute(sources, go); });
+
+  const pointcloud::PointCloudStats& s = cloud.stats();
+  ctx.settings()["domain"] = "points";
+  ctx.settings()["method"] = o.method;
+  ctx.settings()["neighbours"] = o.neighbours;
+  ctx.settings()["sources"] = sources.size();
+  cli::Json& cs = ctx.stats()["cloud"];
+  cs["points"] = s.points;
+  cs["unique_points"] = s.unique_points;
+  cs["duplicates"] = s.duplicates;
+  cs["components"] = s.components;
+  cs["largest_component"] = s.largest_component;
+  cs["links"] = s.links;
+  cs["normals_from_input"] = s.normals_from_input;
+  cs["normals_estimated"] = s.normals_estimated;
+  cli::Json& ops = ctx.operations();
+  ops["update_steps"] = r.stats.update_steps;
+  ops["updates"] = r.stats.updates;
+  ops["bends"] = r.stats.bends;
+  ops["iterations"] = r.stats.iterations;
+  std::size_t reached = 0;
+  double far = 0;
+  for (double d : r.distance)
+    if (std::isfinite(d)) ++reached, far = std::max(far, d);
+  ctx.stats()["result"]["points_reached"] = reached;
+  ctx.stats()["result"]["points_unreached"] = r.distance.size() - reached;
+  ctx.stats()["result"]["max_distance"] = far;
+  ctx.timer().time("write", [&] {
+    write_field(o.output, in, r.distance, r.source, o.labels || sources.size() > 1, o.ascii);
+  });
+}
+
+}  // namespace gsp::geodesic_app
