@@ -72,21 +72,11 @@ void run_many(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, co
 }
 
 void run(cli::Context& ctx, const Options& o) {
-  render::RenderOptions preview;
-  if (!o.png.empty()) {
-    if (io::format_from_path(o.png) != io::Format::unknown || o.png.size() < 4 ||
-        o.png.substr(o.png.size() - 4) != ".png")
-      throw cli::UsageError("--png: \"" + o.png + "\" does not end in .png");
-    const std::vector<double> view = cli::parse_number_list(o.view, "--view");
-    if (view.size() != 2) throw cli::UsageError("--view: expected azimuth,elevation");
-    preview.azimuth = view[0], preview.elevation = view[1];
-    preview.width = preview.height = o.png_size;
-    preview.supersample = 2;
-  }
+  const render::RenderOptions preview = render::preview_options(o.preview);
   // Checked before any work, so a typo in the extension costs nothing.
   if (o.separate && o.matrix) throw cli::UsageError("--separate and --matrix exclude each other");
   if ((o.separate || o.matrix) && o.method != "gsp") throw cli::UsageError("--separate and --matrix need --method gsp");
-  if ((o.separate || o.matrix) && !o.png.empty()) throw cli::UsageError("--png draws one field: not with --separate or --matrix");
+  if ((o.separate || o.matrix) && o.preview.wanted()) throw cli::UsageError("--png draws one field: not with --separate or --matrix");
   if (o.matrix) {
     const bool csv = o.output.size() >= 4 && o.output.compare(o.output.size() - 4, 4, ".csv") == 0;
     if (!csv && io::format_from_path(o.output) != io::Format::txt)
@@ -110,7 +100,7 @@ void run(cli::Context& ctx, const Options& o) {
   load.require_faces = o.domain == "mesh";   // auto and points accept a cloud
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
   if (o.domain == "points" || (o.domain == "auto" && in.mesh.is_point_cloud())) {
-    if (!o.png.empty()) throw cli::UsageError("--png draws meshes: not with a point cloud");
+    if (o.preview.wanted()) throw cli::UsageError("--png draws meshes: not with a point cloud");
     run_points(ctx, o, in, max_distance);
     return;
   }
@@ -157,9 +147,9 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.timer().time("write", [&] {
     write_field(o.output, in, result.vertex_distance, result.vertex_source, labels, o.ascii);
   });
-  if (!o.png.empty())
+  if (o.preview.wanted())
     ctx.timer().time("preview", [&] {
-      render::render_field_preview(o.png, in.mesh, result.vertex_distance, src.positions, preview);
+      render::render_field_preview(o.preview.png, in.mesh, result.vertex_distance, src.positions, preview);
     });
 }
 

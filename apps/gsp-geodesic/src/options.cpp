@@ -53,12 +53,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--matrix", o.matrix,
                "the matrix of distances between the --source-vertex vertices (.txt: spaces, .csv: commas)");
   app.add_option("--threads", o.threads, "threads for --separate / --matrix (default: all)");
-  app.add_option("--png", o.png, "also write a preview picture: the field with iso-lines, sources in red")
-      ->type_name("FILE.png");
-  app.add_option("--view", o.view, "preview camera: azimuth,elevation in degrees (default 30,20)")
-      ->type_name("AZ,EL");
-  app.add_option("--png-size", o.png_size, "preview width and height in pixels (default 800)")
-      ->check(CLI::Range(16, 8192));
+  render::add_preview_options(app, o.preview, "the field with iso-lines, sources in red");
   cli::add_load_options(app, o.load);
 }
 

@@ -2,6 +2,7 @@
 // What gsp-geodesic is asked to do, as parsed from the command line.
 #include <gsp/cli/load.hpp>
 #include <gsp/geodesics.hpp>
+#include <gsp/render/preview_cli.hpp>
 
 #include <string>
 #include <vector>
@@ -32,9 +33,7 @@ struct Options {
   bool separate = false;                      // one field per source, OUT-<i>.<ext>
   bool matrix = false;                        // the distance matrix between the source vertices
   unsigned threads = 0;                       // for --separate / --matrix; 0: all hardware threads
-  std::string png;                            // preview picture, empty: none
-  std::string view = "30,20";                 // azimuth,elevation in degrees
-  int png_size = 800;
+  render::PreviewRequest preview;             // --png, --view, --png-size
   cli::LoadOptions load;
 };
 

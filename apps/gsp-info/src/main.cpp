@@ -8,6 +8,7 @@
 #include <gsp/cli/parse.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/layout.hpp>
+#include <gsp/render/preview_cli.hpp>
 #include <gsp/render/render.hpp>
 #include <gsp/topology.hpp>
 #include <gsp/weld.hpp>
@@ -24,15 +25,15 @@ struct Options {
   bool json = false;
   bool layout = false;
   bool ascii = false;
-  std::string png;   // picture of the mesh with its edges, empty: none
+  gsp::render::PreviewRequest preview;   // --png (the mesh with its edges), --view, --png-size
   gsp::cli::LoadOptions load;
 };
 
 void run(gsp::cli::Context& ctx, Options& opt) {
   using namespace gsp;
   // Check the output names before any work: a typo in the extension costs nothing.
-  if (!opt.png.empty() && (opt.png.size() < 4 || opt.png.compare(opt.png.size() - 4, 4, ".png") != 0))
-    throw cli::UsageError("--png: \"" + opt.png + "\" does not end in .png");
+  render::RenderOptions view = render::preview_options(opt.preview);
+  view.wireframe = true;
   if (!opt.output.empty())
     cli::output_format(opt.output, {io::Format::ply, io::Format::obj, io::Format::off, io::Format::glb,
                                     io::Format::gltf});
@@ -95,15 +96,11 @@ void run(gsp::cli::Context& ctx, Options& opt) {
     ctx.stats()["output"]["faces"] = in.mesh.num_faces();
   }
 
-  if (!opt.png.empty())
+  if (opt.preview.wanted())
     ctx.timer().time("preview", [&] {
       render::Scene scene;
       scene.mesh = in.mesh;
-      render::RenderOptions view;
-      view.width = view.height = 800;
-      view.wireframe = true;
-      view.supersample = 2;
-      render::write_png(opt.png, render::render(scene, view));
+      render::write_png(opt.preview.png, render::render(scene, view));
     });
 
   ctx.settings()["layout"] = opt.layout;
@@ -135,8 +132,7 @@ int main(int argc, char** argv) {
                        "welded unless --no-weld")
             ->type_name("OUT");
         app.add_flag("--ascii", opt.ascii, "Write PLY output as ASCII (default: binary little-endian)");
-        app.add_option("--png", opt.png, "Also write a picture of the mesh with its edges")
-            ->type_name("FILE.png");
+        gsp::render::add_preview_options(app, opt.preview, "the mesh with its edges");
         gsp::cli::add_load_options(app, opt.load);
       },
       [&](gsp::cli::Context& ctx) { run(ctx, opt); });

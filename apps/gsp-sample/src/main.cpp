@@ -7,6 +7,7 @@
 #include <gsp/cli/load.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/render/preview_cli.hpp>
 #include <gsp/render/render.hpp>
 #include <gsp/sampling/quality.hpp>
 #include <gsp/sampling/sampler.hpp>
@@ -21,13 +22,13 @@ namespace {
 using namespace gsp;
 
 struct Options {
-  std::string input, output, radius, mode = "poisson", png, view = "30,20";
+  std::string input, output, radius, mode = "poisson";
   std::size_t count = 0;
   std::uint64_t seed = 1;
   std::size_t max_rejections = 500;
   std::size_t quality_samples = 0;
   bool no_fill = false, ascii = false;
-  int png_size = 800;
+  render::PreviewRequest preview;   // --png, --view, --png-size
   cli::LoadOptions load;
 };
 
@@ -51,9 +52,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--quality-samples", o.quality_samples,
                  "with --stats: measure the nearest-neighbour distance from this many samples (default all)");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
-  app.add_option("--png", o.png, "also write a picture: the mesh with the samples as spheres")->type_name("FILE.png");
-  app.add_option("--view", o.view, "picture camera: azimuth,elevation in degrees (default 30,20)")->type_name("AZ,EL");
-  app.add_option("--png-size", o.png_size, "picture width and height in pixels (default 800)")->check(CLI::Range(16, 8192));
+  render::add_preview_options(app, o.preview, "the mesh with the samples as spheres");
   cli::add_load_options(app, o.load);
 }
 
@@ -91,16 +90,8 @@ void report(cli::Context& ctx, const sampling::Sampler& sampler, const sampling:
 void run(cli::Context& ctx, const Options& o) {
   if ((o.count > 0) == !o.radius.empty()) throw cli::UsageError("give exactly one of --count and --radius");
   const double radius_arg = o.radius.empty() ? 0.0 : parse_radius(o.radius);
-  render::RenderOptions preview;
-  if (!o.png.empty()) {
-    if (o.png.size() < 4 || o.png.substr(o.png.size() - 4) != ".png")
-      throw cli::UsageError("--png: \"" + o.png + "\" does not end in .png");
-    const std::vector<double> view = cli::parse_number_list(o.view, "--view");
-    if (view.size() != 2) throw cli::UsageError("--view: expected azimuth,elevation");
-    preview.azimuth = view[0], preview.elevation = view[1];
-    preview.width = preview.height = o.png_size;
-    preview.supersample = 2;
-  }
+  const render::RenderOptions preview = render::preview_options(o.preview);
+
   cli::output_format(o.output, {io::Format::ply, io::Format::obj, io::Format::gltf, io::Format::glb, io::Format::txt});
 
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
@@ -155,14 +146,14 @@ void run(cli::Context& ctx, const Options& o) {
   }
 
   ctx.timer().time("write", [&] { sample_app::write_samples(o.output, result.samples, o.ascii); });
-  if (!o.png.empty())
+  if (o.preview.wanted())
     ctx.timer().time("preview", [&] {
       render::Scene scene;
       scene.mesh = in.mesh;
       for (const sampling::Sample& s : result.samples) scene.points.push_back(s.position);
       scene.point_radius = 0.2 * result.radius;
       if (!(scene.point_radius > 0) || !std::isfinite(scene.point_radius)) scene.point_radius = 0;
-      render::write_png(o.png, render::render(scene, preview));
+      render::write_png(o.preview.png, render::render(scene, preview));
     });
 }
 
