@@ -91,10 +91,11 @@ struct GeodesicSolver::Impl {
   std::vector<Index> bridge_vertices;
   std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
   double mean_edge = 1;
+  bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
   VisibilityHeuristic heuristic;
   SolverTimings timings;
 
-  void build_input(const Connectivity& conn);
+  void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_bridge_vertices();
   void build_delaunay();
   template <class Real>
@@ -102,7 +103,7 @@ struct GeodesicSolver::Impl {
                      const GeodesicOptions& options) const;
 };
 
-void GeodesicSolver::Impl::build_input(const Connectivity& conn) {
+void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vector<double>& edge_lengths) {
   const std::size_t nh = conn.num_halfedges();
   if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^30 halfedges");
   skipped_face.assign(mesh.num_faces(), false);
@@ -126,7 +127,14 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn) {
     for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
   }
   input.triangles = mesh.triangles;
-  input.length = detail::halfedge_lengths(mesh);
+  if (edge_lengths.empty()) {
+    input.length = detail::halfedge_lengths(mesh);
+  } else {
+    // Given in input face order; the layout moves whole faces (corners keep their order).
+    input.length.resize(edge_lengths.size());
+    for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+      for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(layout.face_order[f]) + i];
+  }
   input.set_direction_bits(plain);
   input.corner_begin = conn.vertex_corner_begin;
   input.corners = conn.vertex_corners;
@@ -188,15 +196,17 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
     : impl_(std::make_unique<Impl>()) {
   using Clock = std::chrono::steady_clock;
   validate(input);
+  if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(input, options.edge_lengths);
   auto t0 = Clock::now();
   Impl& m = *impl_;
+  m.custom_lengths = !options.edge_lengths.empty();
   m.heuristic = options.heuristic;
   m.layout = options.optimize_layout ? compute_cache_layout(input) : identity_layout(input);
   m.mesh = apply_layout(input, m.layout);
   auto t1 = Clock::now();
   const Connectivity conn = build_connectivity(m.mesh);
-  m.mean_edge = detail::mean_edge_length(m.mesh);
-  m.build_input(conn);
+  m.build_input(conn, options.edge_lengths);
+  m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
   m.find_bridge_vertices();
   std::vector<Index> nonmanifold = m.bridge_vertices;   // plus the ends of edges with > 2 faces
   for (Index e = 0; e < conn.num_edges(); ++e)
@@ -204,7 +214,8 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
       nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
       nonmanifold.push_back(to_vertex(m.mesh, conn.edge_halfedge[e]));
     }
-  m.flat = detail::flat_vertices(m.mesh, m.input.ring, m.skipped_face, nonmanifold);
+  m.flat = detail::flat_vertices(m.mesh, m.input.ring, m.skipped_face, nonmanifold,
+                                 m.custom_lengths ? &m.input.length : nullptr);
   if (options.intrinsic_delaunay) m.build_delaunay();
   (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.flat);
   auto t2 = Clock::now();
@@ -235,6 +246,11 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
     throw InvalidInput("max_distance must be >= 0");
   if (options.goal_directed && options.targets.empty())
     throw InvalidInput("goal_directed (A*) needs at least one target");
+  // Both are 3D constructions: a straight-line lower bound and a point in the face's plane.
+  if (impl_->custom_lengths && options.goal_directed)
+    throw InvalidInput("goal_directed (A*) bounds by 3D straight lines: not with SolverOptions::edge_lengths");
+  if (impl_->custom_lengths && options.want_face_sources)
+    throw InvalidInput("per-face virtual sources are 3D points: not with SolverOptions::edge_lengths");
   for (Index t : options.targets)
     if (t >= impl_->mesh.num_vertices())
       throw InvalidInput("target vertex " + std::to_string(t) + " does not exist (" +

@@ -1,19 +1,57 @@
 #include "intrinsic_geometry.hpp"
 
+#include <gsp/errors.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace gsp::detail {
+namespace {
 
-double mean_edge_length(const TriangleMesh& mesh) {
+// The angle between sides a and b of a triangle whose third side is c. atan2 of (4 area,
+// a^2 + b^2 - c^2) with Kahan's ordering of Heron's product stays accurate for slivers, where
+// acos of the cosine loses half the digits. A zero-length side gives 0, like the 3D formula.
+double corner_angle(double a, double b, double c) {
+  if (!(a > 0 && b > 0)) return 0;
+  double s[3] = {a, b, c};
+  std::sort(s, s + 3, [](double x, double y) { return x > y; });
+  const double x = s[0], y = s[1], z = s[2];   // x >= y >= z
+  const double p = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+  const double four_area = std::sqrt(std::max(0.0, p));
+  return std::atan2(four_area, (a * a + b * b) - c * c);
+}
+
+}  // namespace
+
+double mean_edge_length(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
   double sum = 0;   // in double: millions of float lengths would lose digits
   std::size_t n = 0;
-  for (const Triangle& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
-    for (int i = 0; i < 3; ++i) sum += distance(mesh.positions[t[i]], mesh.positions[t[(i + 1) % 3]]);
+  for (std::size_t f = 0; f < skipped_face.size(); ++f) {
+    if (skipped_face[f]) continue;
+    for (int i = 0; i < 3; ++i) sum += length[3 * f + i];
     n += 3;
   }
   return (n > 0 && sum > 0) ? sum / double(n) : 1.0;
+}
+
+void validate_halfedge_lengths(const TriangleMesh& mesh, const std::vector<double>& length) {
+  if (length.size() != 3 * mesh.num_faces())
+    throw InvalidInput("edge lengths: " + std::to_string(length.size()) + " values for " +
+                       std::to_string(3 * mesh.num_faces()) + " halfedges (3 per face)");
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const double* l = &length[3 * f];
+    for (int i = 0; i < 3; ++i)
+      if (!std::isfinite(l[i]) || l[i] < 0)
+        throw InvalidInput("edge lengths: face " + std::to_string(f) + " halfedge " + std::to_string(i) +
+                           " has length " + std::to_string(l[i]) + " (must be finite and >= 0)");
+    const double longest = std::max({l[0], l[1], l[2]});
+    // The longest edge against the other two: rounding of lengths computed from a metric
+    // (and float-stored slivers) leaves degenerate faces a hair outside.
+    if (longest > (l[0] + l[1] + l[2] - longest) + 1e-6 * longest)
+      throw InvalidInput("edge lengths: face " + std::to_string(f) + " violates the triangle inequality (" +
+                         std::to_string(l[0]) + ", " + std::to_string(l[1]) + ", " + std::to_string(l[2]) + ")");
+  }
 }
 
 std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
@@ -39,7 +77,8 @@ void canonical_corners(const std::vector<double>& length, Index f, double scale,
 
 std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vector<Index>& ring,
                                         const std::vector<bool>& skipped_face,
-                                        const std::vector<Index>& nonmanifold_vertices) {
+                                        const std::vector<Index>& nonmanifold_vertices,
+                                        const std::vector<double>* length) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
   std::vector<double> angle(nv, 0.0);
@@ -48,9 +87,13 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vec
     if (skipped_face[f]) continue;
     const Triangle& t = mesh.triangles[f];
     for (int i = 0; i < 3; ++i) {
-      const Vec3 a = mesh.positions[t[(i + 1) % 3]] - mesh.positions[t[i]];
-      const Vec3 b = mesh.positions[t[(i + 2) % 3]] - mesh.positions[t[i]];
-      angle[t[i]] += std::atan2(norm(cross(a, b)), dot(a, b));
+      if (length) {
+        angle[t[i]] += corner_angle((*length)[3 * f + i], (*length)[3 * f + (i + 2) % 3], (*length)[3 * f + (i + 1) % 3]);
+      } else {
+        const Vec3 a = mesh.positions[t[(i + 1) % 3]] - mesh.positions[t[i]];
+        const Vec3 b = mesh.positions[t[(i + 2) % 3]] - mesh.positions[t[i]];
+        angle[t[i]] += std::atan2(norm(cross(a, b)), dot(a, b));
+      }
       used[t[i]] = 1;
       const Index h = Index(3 * f + i);
       if ((ring[h] & 0x3fffffffu) == h) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;

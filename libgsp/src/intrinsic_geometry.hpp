@@ -16,9 +16,12 @@ namespace gsp::detail {
 // around such a vertex is the same from either side, so a source that the visibility probe
 // sees past the vertex is still exact when carried straight on. This makes GSP exact on flat
 // and developable regions (planar CAD faces, fans) whatever the heuristic says.
+// The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
+// given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
 std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vector<Index>& ring,
                                         const std::vector<bool>& skipped_face,
-                                        const std::vector<Index>& nonmanifold_vertices);
+                                        const std::vector<Index>& nonmanifold_vertices,
+                                        const std::vector<double>* length = nullptr);
 
 // Corner positions of face f in its canonical frame (scaled lengths), in double.
 void canonical_corners(const std::vector<double>& length, Index f, double scale, double out[3][2]);
@@ -26,8 +29,14 @@ void canonical_corners(const std::vector<double>& length, Index f, double scale,
 // Per halfedge, the 3D length of its edge.
 std::vector<double> halfedge_lengths(const TriangleMesh& mesh);
 
-// Mean length over the halfedges of faces with three distinct corners (each interior edge
-// counted from both sides, which weights it like the faces see it). 1 if there is none.
-double mean_edge_length(const TriangleMesh& mesh);
+// Caller-supplied per-halfedge lengths (input face order), checked: one per halfedge, finite,
+// >= 0 (zero-length edges of coincident vertices are legal mesh data), and each face's three
+// lengths satisfy the triangle inequality within 1e-6 of its longest edge. Throws InvalidInput.
+void validate_halfedge_lengths(const TriangleMesh& mesh, const std::vector<double>& length);
+
+// Mean of `length` over the halfedges of faces not skipped (each interior edge counted from
+// both sides, which weights it like the faces see it). 1 if there is none. Summed in face
+// order, so 3D lengths give the same bits whichever way they were obtained.
+double mean_edge_length(const std::vector<double>& length, const std::vector<bool>& skipped_face);
 
 }  // namespace gsp::detail

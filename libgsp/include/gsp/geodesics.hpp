@@ -118,6 +118,14 @@ struct SolverOptions {
   // the input faces. See docs/gsp-core.md.
   bool intrinsic_delaunay = true;
   VisibilityHeuristic heuristic = VisibilityHeuristic::published();
+  // Intrinsic edge lengths to propagate on instead of the 3D ones (a Riemannian metric, see
+  // gsp::anisotropic; any intrinsic geometry on this connectivity): per halfedge 3f+i of the
+  // input faces, the length from corner i to corner i+1. Empty: from the positions. Each face
+  // uses its own three lengths (a shared edge may have two). Checked by the constructor
+  // (InvalidInput): 3 per face, finite, >= 0, triangle inequality per face within 1e-6 of the
+  // longest edge. With lengths, compute() refuses want_face_sources and goal_directed (both 3D
+  // constructions); distances, labels and targets work as usual.
+  std::vector<double> edge_lengths;
 };
 
 // Prepares a mesh once (layout, connectivity, intrinsic per-halfedge geometry) and answers

@@ -1,0 +1,116 @@
+// Principal curvature directions and the curvature metric: the estimator on shapes with
+// known curvature, and the anisotropy the metric produces on a cylinder (where it is a flat
+// metric with a closed form) and on a real mesh.
+#include "helpers/mesh_builders.hpp"
+
+#include <gsp/anisotropic/metric_field.hpp>
+#include <gsp/anisotropic/metric_sources.hpp>
+#include <gsp/anisotropic/principal_curvature.hpp>
+#include <gsp/io/mesh_io.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace gsp;
+
+constexpr int kSegments = 64, kRings = 40;
+constexpr double kRingHeight = 0.1;
+
+// The unit-radius tube of the mesh builders with rings kRingHeight apart.
+TriangleMesh tube() {
+  TriangleMesh m = test::cylinder(kSegments, kRings);
+  for (Vec3& p : m.positions) p.z *= kRingHeight;
+  return m;
+}
+
+TEST(AnisotropicCurvature, CylinderDirectionsAndCurvatures) {
+  const TriangleMesh m = tube();
+  const auto k = anisotropic::principal_curvatures(m);
+  for (int r = 1; r < kRings; ++r)   // the end rings see a half ring only
+    for (int i = 0; i < kSegments; ++i) {
+      const auto& c = k[r * kSegments + i];
+      ASSERT_TRUE(c.valid);
+      EXPECT_NEAR(std::abs(c.max_curvature), 1.0, 0.03);
+      EXPECT_NEAR(c.min_curvature, 0.0, 0.03);
+      EXPECT_LT(std::abs(c.max_direction.z), 1e-6);          // around the axis
+      EXPECT_GT(std::abs(c.min_direction.z), 1 - 1e-6);      // along it
+    }
+}
+
+TEST(AnisotropicCurvature, SphereIsUmbilic) {
+  const TriangleMesh m = test::icosphere(3);
+  const auto k = anisotropic::principal_curvatures(m);
+  for (const auto& c : k) {
+    ASSERT_TRUE(c.valid);
+    const double radius = norm(m.positions[&c - &k[0]]);
+    EXPECT_NEAR(c.max_curvature * radius, 1.0, 0.05);
+    EXPECT_NEAR(c.min_curvature * radius, 1.0, 0.05);
+  }
+}
+
+TEST(AnisotropicCurvature, CylinderDistancesFollowTheFlatAnisotropicClosedForm) {
+  // Unrolled, the tube is a rectangle, and "around" is a fixed direction in it: a step around
+  // costs 2, a step along the axis 1, so d = sqrt(z^2 + (2 s)^2) for arc s (the short way).
+  const TriangleMesh m = tube();
+  const double ratio = 2;
+  const auto field = anisotropic::curvature_metric(m, ratio);
+  const Index source = (kRings / 2) * kSegments;
+  const auto r = anisotropic::geodesic_distances(m, field, {Source::at_vertex(source)});
+  const double pi = std::acos(-1.0), chord = 2 * std::sin(pi / kSegments);
+  double worst = 0;
+  for (int ring = 0; ring <= kRings; ++ring)
+    for (int i = 0; i < kSegments; ++i) {
+      const Index v = Index(ring * kSegments + i);
+      if (v == source) continue;
+      const double z = (ring - kRings / 2) * kRingHeight, s = chord * std::min(i, kSegments - i);
+      const double want = std::sqrt(z * z + ratio * ratio * s * s);
+      worst = std::max(worst, std::abs(r.vertex_distance[v] - want) / want);
+    }
+  // Approximate: each face's tensor is the mean of its corners', whose directions differ by
+  // one segment's turn, and neighbouring faces disagree slightly on their shared edges.
+  EXPECT_LT(worst, 0.005);   // measured 0.0009
+  // The anisotropy itself: one unit along the axis costs 1, one unit of arc around costs 2.
+  EXPECT_NEAR(r.vertex_distance[source + 10 * kSegments], 1.0, 0.01);
+  EXPECT_NEAR(r.vertex_distance[source + 10] / (10 * chord), 2.0, 0.04);
+}
+
+TEST(AnisotropicCurvature, FertilityGivesFinitePositiveStretchedDistances) {
+  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const Index source = 100;
+  const auto iso = GeodesicSolver(m).compute({Source::at_vertex(source)});
+  double sum_ratio = 0;
+  std::size_t n = 0;
+  for (double ratio : {3.0, 0.5}) {
+    const auto r = anisotropic::geodesic_distances(m, anisotropic::curvature_metric(m, ratio), {Source::at_vertex(source)});
+    sum_ratio = 0, n = 0;
+    for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+      if (v == source) {
+        EXPECT_EQ(r.vertex_distance[v], 0.0);
+        continue;
+      }
+      ASSERT_TRUE(std::isfinite(r.vertex_distance[v])) << v;
+      ASSERT_GT(r.vertex_distance[v], 0.0) << v;
+      // Every step costs between min(1, ratio) and max(1, ratio) times its 3D length; both
+      // runs are approximations (the metric one more so: edges with two lengths), measured
+      // down to 0.962 of the isotropic run at ratio 3.
+      EXPECT_GE(r.vertex_distance[v], 0.95 * std::min(1.0, ratio) * iso.vertex_distance[v]) << v;
+      EXPECT_LE(r.vertex_distance[v], 1.02 * std::max(1.0, ratio) * iso.vertex_distance[v]) << v;
+      sum_ratio += r.vertex_distance[v] / iso.vertex_distance[v];
+      ++n;
+    }
+    const double mean = sum_ratio / double(n);
+    // Strictly between the bounds: some steps go along the stretched direction, some across.
+    if (ratio > 1) {
+      EXPECT_GT(mean, 1.2);
+      EXPECT_LT(mean, 2.8);
+    } else {
+      EXPECT_LT(mean, 0.95);
+      EXPECT_GT(mean, 0.55);
+    }
+  }
+}
+
+}  // namespace
