@@ -1,6 +1,7 @@
 // gsp-geodesic: geodesic distances on a triangle mesh from vertices, surface points or points
 // inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
 #include "batch_output.hpp"
+#include "metric_option.hpp"
 #include "options.hpp"
 #include "points.hpp"
 #include "output.hpp"
@@ -90,6 +91,8 @@ void run(cli::Context& ctx, const Options& o) {
   const Strategy strategy = parse_strategy(o.strategy);
   const Precision precision = parse_precision(o.precision);
   const VisibilityHeuristic heuristic = parse_heuristic(o.heuristic);
+  const MetricRequest metric = parse_metric(o.metric);
+  if (metric.wanted() && o.method != "gsp") throw cli::UsageError("--metric needs --method gsp");
   double max_distance = std::numeric_limits<double>::infinity();
   if (!o.max_distance.empty()) {
     max_distance = cli::parse_number(o.max_distance, "--max-distance");
@@ -101,6 +104,7 @@ void run(cli::Context& ctx, const Options& o) {
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
   if (o.domain == "points" || (o.domain == "auto" && in.mesh.is_point_cloud())) {
     if (o.preview.wanted()) throw cli::UsageError("--png draws meshes: not with a point cloud");
+    if (metric.wanted()) throw cli::UsageError("--metric needs a mesh: not with a point cloud");
     run_points(ctx, o, in, max_distance);
     return;
   }
@@ -119,6 +123,7 @@ void run(cli::Context& ctx, const Options& o) {
     so.optimize_layout = !o.no_layout;
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
+    so.edge_lengths = metric_lengths(ctx, metric, in);
     GeodesicSolver solver(in.mesh, so);
     ctx.timer().add("layout", solver.timings().layout);
     ctx.timer().add("build", solver.timings().build);

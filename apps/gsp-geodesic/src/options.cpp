@@ -1,4 +1,5 @@
 #include "options.hpp"
+#include "metric_option.hpp"
 
 #include <gsp/cli/app.hpp>
 
@@ -53,6 +54,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--matrix", o.matrix,
                "the matrix of distances between the --source-vertex vertices (.txt: spaces, .csv: commas)");
   app.add_option("--threads", o.threads, "threads for --separate / --matrix (default: all)");
+  add_metric_option(app, o.metric);
   render::add_preview_options(app, o.preview, "the field with iso-lines, sources in red");
   cli::add_load_options(app, o.load);
 }

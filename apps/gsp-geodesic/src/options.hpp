@@ -33,6 +33,7 @@ struct Options {
   bool separate = false;                      // one field per source, OUT-<i>.<ext>
   bool matrix = false;                        // the distance matrix between the source vertices
   unsigned threads = 0;                       // for --separate / --matrix; 0: all hardware threads
+  std::string metric;                         // --metric (metric_option.hpp); empty: 3D lengths
   render::PreviewRequest preview;             // --png, --view, --png-size
   cli::LoadOptions load;
 };
