@@ -152,6 +152,8 @@ TEST(PathTrace, FertilityPathsMatchTheField) {
   const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
   const PathTracer tracer(m);
   SplitMix rng{5};
+  double sum = 0;
+  int n = 0;
   for (int trial = 0; trial < 4; ++trial) {
     const Index s = Index(rng.next() % m.num_vertices());
     const GeodesicResult field = field_from(m, Source::at_vertex(s));
@@ -162,14 +164,49 @@ TEST(PathTrace, FertilityPathsMatchTheField) {
     for (std::size_t k = 0; k < paths.size(); ++k) {
       SCOPED_TRACE("trial " + std::to_string(trial) + " end " + std::to_string(k));
       expect_valid_path(m, paths[k]);
-      // The issue asks for 0.1%; the walk is not there yet on every path (measured up to 13%
-      // on these 44 paths, most within 1%; see pathfinding_exact_test): this pins the current
-      // state. A traced path is a real surface path, so it is never much shorter.
-      EXPECT_NEAR(paths[k].length, paths[k].field_distance, 0.15 * paths[k].field_distance);
-      EXPECT_GT(paths[k].length, paths[k].field_distance * (1 - 1e-2));
+      // The taut path is within 0.1% of the exact geodesic (pathfinding_exact_test); the field
+      // itself is off by its own error (0.2-0.3% mean, 1.5% at worst on these paths), so the
+      // two agree to that, in either direction.
+      const double rel = std::abs(paths[k].length - paths[k].field_distance) / paths[k].field_distance;
+      EXPECT_LT(rel, 0.02);
+      sum += rel, ++n;
       EXPECT_LT(distance(paths[k].points.front().position, m.positions[s]), 1e-6);
     }
   }
+  EXPECT_LT(sum / n, 0.005);
+}
+
+// shortest_paths(): A*, settle and full propagation give the same taut paths (within 0.1%),
+// A* and settle expand fewer faces than the whole mesh, and the Dijkstra-on-edges baseline
+// walks along edges (every point a vertex) and is never shorter.
+TEST(PathQuery, MethodsAgreeAndEdgePathsAreLonger) {
+  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const GeodesicSolver solver(m);
+  const PathTracer tracer(m);
+  const Endpoint from = Endpoint::at_vertex(100);
+  const std::vector<Endpoint> to{Endpoint::at_vertex(2000), Endpoint::in_face(4000, {0.2, 0.3, 0.5})};
+  pathfinding::PathQueryOptions o;
+  o.method = pathfinding::PathMethod::full;
+  const auto full = pathfinding::shortest_paths(solver, tracer, from, to, o);
+  o.method = pathfinding::PathMethod::settle;
+  const auto settle = pathfinding::shortest_paths(solver, tracer, from, to, o);
+  o.method = pathfinding::PathMethod::astar;
+  const auto astar = pathfinding::shortest_paths(solver, tracer, from, to, o);
+  const auto edges = pathfinding::edge_paths(m, tracer, from, to);
+  for (std::size_t k = 0; k < to.size(); ++k) {
+    SCOPED_TRACE(k);
+    for (const auto* r : {&full, &settle, &astar, &edges}) expect_valid_path(m, r->paths[k]);
+    EXPECT_NEAR(astar.paths[k].length, full.paths[k].length, 1e-3 * full.paths[k].length);
+    EXPECT_NEAR(settle.paths[k].length, full.paths[k].length, 1e-3 * full.paths[k].length);
+    EXPECT_GT(edges.paths[k].length, full.paths[k].length);
+    for (std::size_t i = 1; i + 1 < edges.paths[k].points.size(); ++i) {
+      const auto& b = edges.paths[k].points[i].barycentric;
+      EXPECT_NEAR(std::max({b[0], b[1], b[2]}), 1.0, 1e-12) << "edge-path point " << i << " is not a vertex";
+    }
+  }
+  EXPECT_EQ(full.stats.faces_reached, m.num_faces());
+  EXPECT_LT(astar.stats.faces_reached, settle.stats.faces_reached);
+  EXPECT_LT(settle.stats.faces_reached, full.stats.faces_reached);
 }
 
 }  // namespace

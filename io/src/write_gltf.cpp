@@ -5,6 +5,7 @@
 // VEC4). tinygltf serialises to memory and the bytes go through AtomicFile.
 #include <gsp/io/atomic_file.hpp>
 
+#include "gltf_builder.hpp"
 #include "writers.hpp"
 
 #include <tiny_gltf.h>
@@ -18,37 +19,6 @@
 namespace gsp::io::detail {
 
 namespace {
-
-struct Builder {
-  tinygltf::Model model;
-  std::vector<unsigned char>& data() { return model.buffers[0].data; }
-
-  // Appends raw bytes as a new buffer view (4-byte aligned) and an accessor over it.
-  int add(const void* bytes, std::size_t size, std::size_t count, int component, int type, bool normalized, int target) {
-    auto& d = data();
-    while (d.size() % 4) d.push_back(0);
-    tinygltf::BufferView bv;
-    bv.buffer = 0;
-    bv.byteOffset = d.size();
-    bv.byteLength = size;
-    bv.target = target;
-    const auto* p = static_cast<const unsigned char*>(bytes);
-    d.insert(d.end(), p, p + size);
-    model.bufferViews.push_back(bv);
-    tinygltf::Accessor a;
-    a.bufferView = static_cast<int>(model.bufferViews.size() - 1);
-    a.byteOffset = 0;
-    a.componentType = component;
-    a.count = count;
-    a.type = type;
-    a.normalized = normalized;
-    model.accessors.push_back(a);
-    return static_cast<int>(model.accessors.size() - 1);
-  }
-  int add_floats(const std::vector<float>& v, int type, std::size_t count) {
-    return add(v.data(), v.size() * sizeof(float), count, TINYGLTF_COMPONENT_TYPE_FLOAT, type, false, TINYGLTF_TARGET_ARRAY_BUFFER);
-  }
-};
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -115,11 +85,15 @@ void write_gltf(const std::string& path, const TriangleMesh& mesh, const VertexA
   b.model.scenes.push_back(scene);
   b.model.defaultScene = 0;
 
+  save_gltf(path, b.model, binary);
+}
+
+void save_gltf(const std::string& path, tinygltf::Model& model, bool binary) {
   std::ostringstream stream;
   tinygltf::TinyGLTF writer;
   bool ok = false;
   try {
-    ok = writer.WriteGltfSceneToStream(&b.model, stream, !binary, binary);
+    ok = writer.WriteGltfSceneToStream(&model, stream, !binary, binary);
   } catch (const std::exception& e) {
     throw IoError(path, "", std::string("glTF serialisation failed: ") + e.what());
   }

@@ -1,5 +1,8 @@
 #include <gsp/pathfinding/path_tracer.hpp>
 
+#include "descent_faces.hpp"
+#include "sleeve.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -16,6 +19,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kBaryTol = 1e-6;
 // A point this close to a corner (in barycentric terms) is that vertex.
 constexpr double kVertexTol = 1e-6;
+// A virtual source with sigma > 0 this close to a corner is that corner.
+constexpr double kCornerSnap = 1e-3;
 
 // The walk's state: a point of a face, the halfedge it entered the face through (so that a
 // path running along that edge is not bounced back across it), and the source it is heading
@@ -79,6 +84,7 @@ class Walk {
     out_.points.push_back({w.face, w.bary, w.position});
   }
   void shorten();
+  void drop_face_bends();
   void pull_taut();
   bool unpin_vertices();
 
@@ -93,6 +99,17 @@ class Walk {
     int corner;
     Bary bs;
     return exit_of(o, t, corner, bs) && (corner < 0 || t > 1e-9);
+  }
+  // The face's own source (reached inside the face) is a real source: the face's corners are
+  // about as near the sources as the field says the source point is.
+  bool genuine_source(const Walker& w) const {
+    const Triangle& t = mesh_.triangles[w.face];
+    double edge = 0, nearest = kInf;
+    for (int i = 0; i < 3; ++i) {
+      edge = std::max(edge, distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]));
+      if (t[i] < field_.vertex_distance.size()) nearest = std::min(nearest, field_.vertex_distance[t[i]]);
+    }
+    return nearest <= w.sigma + 1.5 * edge + 10 * eps_;
   }
   enum class VertexStep { moved, source, keep, stuck };
   VertexStep at_vertex(Index v, Walker& w);
@@ -292,16 +309,36 @@ GeodesicPath Walk::run(const Endpoint& end) {
     Walker next = w;
     next.bary = bq;
     next.position = point(w.face, bq);
+    if (exit_corner < 0 && w.own && (w.sigma <= eps_ || bq[top] < 1 - kCornerSnap) && !genuine_source(w)) {
+      // The face's source lies inside the face only in an unfolding that overlaps itself (the
+      // face was reached the long way round a curved part): no real source is here. Go on
+      // from the face's corner nearest to the sources; the shortening straightens the detour.
+      const Triangle& t = mesh_.triangles[w.face];
+      int best = 0;
+      for (int i = 1; i < 3; ++i)
+        if (field_.vertex_distance[t[i]] < field_.vertex_distance[t[best]]) best = i;
+      next.bary = {0, 0, 0};
+      next.bary[best] = 1;
+      next.position = mesh_.positions[t[best]];
+      emit(next);
+      w = next;
+      w.sigma = kInf;
+      step_vertex(t[best]);
+      continue;
+    }
     if (exit_corner < 0) {
       // Reached the target inside (or on the border of) the face.
       next.position = w.target;
       next.entry = kInvalidIndex;
       emit(next);
-      if (w.own && (w.sigma <= eps_ || bq[top] < 1 - kVertexTol)) {
+      // A source with sigma > 0 next to a corner is that corner (a turn of the geodesic): the
+      // float-stored source misses the vertex by about 1e-5 of an edge on fine meshes.
+      const bool at_corner = bq[top] >= 1 - kCornerSnap;
+      if (w.own && (w.sigma <= eps_ || !at_corner)) {
         out_.source = w.label;   // the real source (a vertex, or a face point)
         break;
       }
-      if (w.own && bq[top] >= 1 - kVertexTol) {   // a corner of the geodesic
+      if (w.own && at_corner) {   // a corner of the geodesic
         next.position = point(w.face, next.bary = Bary{0, 0, 0});
         next.bary[top] = 1;
         next.position = mesh_.positions[mesh_.triangles[w.face][top]];
@@ -338,8 +375,24 @@ GeodesicPath Walk::run(const Endpoint& end) {
     }
     w = crossed;
   }
-  pull_taut();
-  std::reverse(out_.points.begin(), out_.points.end());
+  // Pull the walk taut: the funnel in the sleeve of faces it crossed, bends the geodesic does
+  // not need undone (sleeve.hpp); the older in-place relaxation where no sleeve can be formed.
+  std::vector<PathPoint> taut;
+  std::vector<Index> segment_faces;   // walk order: each point's face holds the segment to it
+  for (std::size_t k = out_.points.size(); k-- > 1;) segment_faces.push_back(out_.points[k].face);
+  const PathPoint first = out_.points.back(), last = out_.points.front();
+  if (detail::shorten_in_sleeve(mesh_, conn_, first, last, segment_faces, taut)) {
+    out_.points.swap(taut);
+    // The route down the field's vertex distances, pulled taut too: keep the shorter.
+    std::vector<PathPoint> other;
+    const std::vector<Index> faces = detail::descent_faces(mesh_, conn_, field_.vertex_distance, first, last);
+    if (!faces.empty() && detail::shorten_in_sleeve(mesh_, conn_, first, last, faces, other) &&
+        polyline_length(other) < polyline_length(out_.points))
+      out_.points.swap(other);
+  } else {
+    pull_taut();
+    std::reverse(out_.points.begin(), out_.points.end());
+  }
   out_.length = polyline_length(out_.points);
   return out_;
 }
@@ -349,8 +402,34 @@ GeodesicPath Walk::run(const Endpoint& end) {
 // faces slides along that edge to the spot where the two segments unfold into a straight line
 // (clamped to the edge), sweeping until nothing moves; points at vertices stay.
 void Walk::pull_taut() {
+  drop_face_bends();
   shorten();
-  for (int round = 0; round < 32 && unpin_vertices(); ++round) shorten();
+  for (int round = 0; round < 64 && unpin_vertices(); ++round) {
+    drop_face_bends();
+    shorten();
+  }
+}
+
+// A point strictly inside a face where the path bends (the walk switched from a carried source
+// to the face's own there) is never part of a geodesic: the segments before and after it lie in
+// the same face, so the straight segment between their other ends does too. Points at vertices
+// stay (they may be true corners; unpin_vertices decides).
+void Walk::drop_face_bends() {
+  std::vector<PathPoint>& pts = out_.points;
+  if (pts.size() < 3) return;
+  std::vector<PathPoint> kept;
+  kept.reserve(pts.size());
+  kept.push_back(pts.front());
+  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
+    const bool same_face = pts[k].face == pts[k + 1].face;
+    bool at_vertex = false;
+    for (Index v : mesh_.triangles[pts[k].face])
+      at_vertex |= distance(mesh_.positions[v], pts[k].position) <= 10 * eps_;
+    if (same_face && !at_vertex) continue;
+    kept.push_back(pts[k]);
+  }
+  kept.push_back(pts.back());
+  pts.swap(kept);
 }
 
 // A path point at a vertex v that the path wraps round by less than pi on one side is no true

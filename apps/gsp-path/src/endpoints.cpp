@@ -1,0 +1,34 @@
+#include "endpoints.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/closest_point.hpp>
+#include <gsp/errors.hpp>
+
+#include <algorithm>
+
+namespace gsp::path_app {
+
+ResolvedEndpoint resolve_endpoint(const std::string& text, const std::string& option, const cli::LoadedMesh& in) {
+  const TriangleMesh& mesh = in.mesh;
+  ResolvedEndpoint r;
+  if (text.find(':') != std::string::npos) {
+    const cli::FacePoint fp = cli::parse_face_point(text, option);
+    if (fp.face >= mesh.num_faces())
+      throw InvalidInput(option + ": face " + std::to_string(fp.face) + " does not exist (" +
+                         std::to_string(mesh.num_faces()) + " faces)");
+    r.endpoint = pathfinding::Endpoint::in_face(fp.face, {std::max(0.0, 1 - fp.u - fp.v), fp.u, fp.v});
+  } else if (text.find(',') != std::string::npos) {
+    const SurfacePoint s = closest_surface_point(mesh, cli::parse_vec3(text, option));
+    r.endpoint = pathfinding::Endpoint::in_face(s.face, s.barycentric);
+    r.snap_distance = s.distance;
+  } else {
+    const std::vector<Index> v = cli::parse_index_list(text, option);
+    if (v.size() != 1) throw cli::UsageError(option + ": \"" + text + "\": one vertex index, x,y,z or F:u,v");
+    r.endpoint = pathfinding::Endpoint::at_vertex(in.mesh_vertex(v[0]));
+  }
+  r.position = pathfinding::endpoint_position(mesh, r.endpoint);
+  return r;
+}
+
+}  // namespace gsp::path_app
