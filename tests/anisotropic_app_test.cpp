@@ -71,21 +71,26 @@ TEST(AnisotropicApp, PlyTensorProperties) {
 TEST(AnisotropicApp, CurvatureMatchesTheLibrary) {
   ScratchDir dir("aniso");
   const std::string sample = std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off";
-  const auto r = geodesic(dir, sample, "curvature:ratio=3");
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
   const TriangleMesh m = io::read_mesh(sample).mesh;
-  const auto lib = anisotropic::geodesic_distances(m, anisotropic::curvature_metric(m, 3), {Source::at_vertex(kCentre)});
-  ASSERT_EQ(got.size(), lib.vertex_distance.size());
-  for (std::size_t v = 0; v < got.size(); ++v)
-    ASSERT_NEAR(got[v], lib.vertex_distance[v], 1e-6 * (1 + lib.vertex_distance[v])) << v;
+  for (int rounds : {3, 0}) {
+    const std::string spec = rounds == 3 ? "curvature:ratio=3" : "curvature:ratio=3:smooth=0";
+    const auto r = geodesic(dir, sample, spec);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
+    const auto lib =
+        anisotropic::geodesic_distances(m, anisotropic::curvature_metric(m, 3, rounds), {Source::at_vertex(kCentre)});
+    ASSERT_EQ(got.size(), lib.vertex_distance.size());
+    for (std::size_t v = 0; v < got.size(); ++v)
+      ASSERT_NEAR(got[v], lib.vertex_distance[v], 1e-6 * (1 + lib.vertex_distance[v])) << spec << " " << v;
+  }
 }
 
 TEST(AnisotropicApp, BadSpecsAreUsageErrors) {
   ScratchDir dir("aniso");
   const std::string input = grid_file(dir);
   for (const char* spec : {"direction=1,0,0", "direction=1,0:ratio=2", "direction=0,0,0:ratio=2",
-                           "direction=1,0,0:ratio=x", "curvature", "curvature:ratio=-1", "curvature:ratio=0"}) {
+                           "direction=1,0,0:ratio=x", "curvature", "curvature:ratio=-1", "curvature:ratio=0",
+                           "curvature:ratio=2:smooth=-1", "curvature:ratio=2:smooth=x", "curvatures:ratio=2"}) {
     const auto r = geodesic(dir, input, spec);
     EXPECT_EQ(r.exit_code, 2) << spec << ": " << r.err;
     EXPECT_NE(r.err.find("--metric"), std::string::npos) << r.err;

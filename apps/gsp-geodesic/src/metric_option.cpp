@@ -24,7 +24,7 @@ double parse_ratio(const std::string& spec, const std::string& text) {
 
 [[noreturn]] void bad_syntax(const std::string& spec) {
   throw cli::UsageError(std::string(kOption) + ": \"" + spec +
-                        "\" is not direction=X,Y,Z:ratio=R, curvature:ratio=R, attributes or a file");
+                        "\" is not direction=X,Y,Z:ratio=R, curvature:ratio=R[:smooth=N], attributes or a file");
 }
 
 // Per-vertex tensors of the file's vertices onto the (possibly welded) mesh's vertices: a
@@ -49,7 +49,8 @@ anisotropic::MetricField attribute_metric(const cli::LoadedMesh& in) {
 void add_metric_option(CLI::App& app, std::string& spec) {
   app.add_option(kOption, spec,
                  "propagate in a Riemannian metric: direction=X,Y,Z:ratio=R (a step along the direction "
-                 "costs R), curvature:ratio=R (along the largest principal curvature), attributes (PLY "
+                 "costs R), curvature:ratio=R[:smooth=N] (along the largest principal curvature, directions "
+                 "smoothed over N one-rings, default 3), attributes (PLY "
                  "tensor_xx..tensor_zz vertex properties) or a text file of tensors (docs/anisotropic.md)")
       ->type_name("SPEC|FILE");
 }
@@ -71,7 +72,14 @@ MetricRequest parse_metric(const std::string& spec) {
   } else if (starts_with(spec, "curvature")) {
     if (!starts_with(spec, "curvature:ratio=")) bad_syntax(spec);
     r.kind = MetricRequest::Kind::curvature;
-    r.ratio = parse_ratio(spec, spec.substr(16));
+    const std::size_t smooth = spec.find(":smooth=");
+    r.ratio = parse_ratio(spec, spec.substr(16, smooth == std::string::npos ? std::string::npos : smooth - 16));
+    if (smooth != std::string::npos) {
+      const std::vector<Index> n = cli::parse_index_list(spec.substr(smooth + 8), kOption);
+      if (n.size() != 1 || n[0] > 100)
+        throw cli::UsageError(std::string(kOption) + ": \"" + spec + "\": smooth=N takes one count from 0 to 100");
+      r.smoothing = int(n[0]);
+    }
   } else {
     r.kind = MetricRequest::Kind::file;
   }
@@ -92,7 +100,9 @@ std::vector<double> metric_lengths(cli::Context& ctx, const MetricRequest& reque
       case MetricRequest::Kind::direction:
         field = anisotropic::direction_metric(in.mesh, request.direction, request.ratio);
         break;
-      case MetricRequest::Kind::curvature: field = anisotropic::curvature_metric(in.mesh, request.ratio); break;
+      case MetricRequest::Kind::curvature:
+        field = anisotropic::curvature_metric(in.mesh, request.ratio, request.smoothing);
+        break;
     }
     return anisotropic::metric_edge_lengths(in.mesh, field);
   });

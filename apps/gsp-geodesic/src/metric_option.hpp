@@ -1,7 +1,8 @@
 #pragma once
 // --metric: propagate in a Riemannian metric (gsp::anisotropic) instead of the 3D lengths.
 //   --metric direction=X,Y,Z:ratio=R   a step along the direction costs R, across it 1
-//   --metric curvature:ratio=R         a step along the largest principal curvature costs R
+//   --metric curvature:ratio=R[:smooth=N]  a step along the largest principal curvature costs R
+//                                      (directions smoothed over N one-rings, default 3)
 //   --metric attributes                tensors from the input's tensor_xx ... tensor_zz vertex properties
 //   --metric FILE                      tensors from a text file (docs/anisotropic.md)
 #include <gsp/cli/load.hpp>
@@ -26,6 +27,7 @@ struct MetricRequest {
   std::string spec;            // as given
   Vec3 direction;              // Kind::direction
   double ratio = 1;            // Kind::direction and Kind::curvature
+  int smoothing = 3;           // Kind::curvature: one-ring smoothing rounds of the directions
   bool wanted() const { return kind != Kind::none; }
 };
 

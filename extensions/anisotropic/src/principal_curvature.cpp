@@ -67,7 +67,8 @@ std::vector<PrincipalCurvature> principal_curvatures(const TriangleMesh& mesh) {
     PrincipalCurvature& pc = out[v];
     pc.normal = normal[v];
     if (!(norm(normal[v]) > 0)) continue;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> conditioning(ata[v], Eigen::EigenvaluesOnly);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> conditioning;
+    conditioning.computeDirect(ata[v], Eigen::EigenvaluesOnly);
     const Eigen::Vector3d ev = conditioning.eigenvalues();
     if (!(ev[2] > 0) || !(ev[0] > 1e-10 * ev[2])) continue;   // the ring spans fewer than two directions
     const Eigen::Vector3d abc = ata[v].ldlt().solve(atb[v]);

@@ -18,10 +18,14 @@ MetricField direction_metric(const TriangleMesh& mesh, Vec3 direction, double ra
 
 // Per vertex: I + (ratio^2 - 1) k k^T with k the direction of largest absolute principal
 // curvature (principal_curvatures(); around a cylinder, not along it): a step along it costs
-// `ratio`. Vertices where the curvature says nothing about a direction (fit failed, flat,
-// umbilic: |k_max| - |k_min| <= 1e-3 |k_max|) get the identity. Throws InvalidInput for a
-// ratio that is not finite > 0.
-MetricField curvature_metric(const TriangleMesh& mesh, double ratio);
+// `ratio`. The directions are first smoothed: `smoothing_rounds` one-ring averages of the
+// sign-free tensors w k k^T, w = (|k_max| - |k_min|) / (|k_max| + |k_min|) (how sure the
+// direction is), so noisy, flat and umbilic vertices follow their neighbours; k is then the
+// dominant tangent eigenvector. With 0 rounds the raw per-vertex directions are used. Vertices
+// with no dominant direction (top two eigenvalues within 1e-3; raw: |k_max| - |k_min| <=
+// 1e-3 |k_max| or a failed fit) get the identity. Throws InvalidInput for a ratio that is not
+// finite > 0 or negative rounds.
+MetricField curvature_metric(const TriangleMesh& mesh, double ratio, int smoothing_rounds = 3);
 
 // Per-vertex tensors from the scalar vertex attributes tensor_xx, tensor_xy, tensor_xz,
 // tensor_yy, tensor_yz, tensor_zz (PLY float/double properties; names compared without case,
