@@ -1,0 +1,161 @@
+// gsp-cvt: geodesic centroidal Voronoi tessellation of a triangle mesh by Lloyd iterations
+// with GSP, and the isotropic remesh it defines (the restricted Delaunay dual: one vertex per
+// site, one triangle where three regions meet).
+#include "report.hpp"
+
+#include <gsp/cli/app.hpp>
+#include <gsp/cli/load.hpp>
+#include <gsp/cli/parse.hpp>
+#include <gsp/cvt/cvt.hpp>
+#include <gsp/cvt/quality.hpp>
+#include <gsp/cvt/remesh.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/topology.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace gsp;
+
+struct Options {
+  std::string input, output, regions, edge_length, init = "poisson";
+  std::size_t vertices = 0;
+  int iterations = 50;
+  double tolerance = 1e-4;
+  std::uint64_t seed = 1;
+  std::size_t hausdorff_samples = 200000;
+  bool no_fix = false, ascii = false;
+  cli::LoadOptions load;
+};
+
+void add_options(CLI::App& app, Options& o) {
+  app.add_option("INPUT", o.input, "input mesh (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("-o,--output", o.output, "remeshed surface (.obj .ply .off .glb .gltf)")->required();
+  app.add_option("--vertices", o.vertices, "number of sites = output vertices (before region fixes)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--edge-length", o.edge_length,
+                 "target edge length: model units, or \"1%\" of the bounding-box diagonal")
+      ->type_name("L");
+  app.add_option("--iterations", o.iterations, "Lloyd iteration cap (default 50)")->check(CLI::NonNegativeNumber);
+  app.add_option("--tolerance", o.tolerance, "stop when the energy's relative decrease is below this (default 1e-4)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--init", o.init, "initial sites: poisson (default) or farthest")
+      ->check(CLI::IsMember({"poisson", "farthest"}));
+  app.add_option("--seed", o.seed, "random seed of the initial sites");
+  app.add_option("--regions", o.regions,
+                 "also write the input mesh with an int vertex `label` (its region) and a colour per region "
+                 "(.ply .obj .off .glb .gltf)");
+  app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
+  app.add_option("--hausdorff-samples", o.hausdorff_samples,
+                 "with --stats: area-uniform points per surface for the Hausdorff distance (default 200000)");
+  app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
+  cli::add_load_options(app, o.load);
+}
+
+// "0.02" (model units) or "1%" (of the bounding-box diagonal, returned negative).
+double parse_length(std::string text) {
+  const bool percent = !text.empty() && text.back() == '%';
+  if (percent) text.pop_back();
+  const double value = cli::parse_number(text, "--edge-length");
+  if (!(value > 0)) throw cli::UsageError("--edge-length: must be > 0");
+  return percent ? -value : value;
+}
+
+double bbox_diagonal(const TriangleMesh& m) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : m.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return m.positions.empty() ? 0.0 : distance(lo, hi);
+}
+
+void run(cli::Context& ctx, const Options& o) {
+  if ((o.vertices > 0) == !o.edge_length.empty()) throw cli::UsageError("give exactly one of --vertices and --edge-length");
+  const double length_arg = o.edge_length.empty() ? 0.0 : parse_length(o.edge_length);
+  const std::initializer_list<io::Format> meshes{io::Format::obj, io::Format::ply, io::Format::off, io::Format::glb,
+                                                 io::Format::gltf};
+  cli::output_format(o.output, meshes);
+  if (!o.regions.empty()) cli::output_format(o.regions, meshes, "--regions");
+
+  const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  cvt::CvtOptions co;
+  co.sites = o.vertices;
+  co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bbox_diagonal(in.mesh) : length_arg;
+  co.max_iterations = o.iterations;
+  co.tolerance = o.tolerance;
+  co.initial = o.init == "farthest" ? cvt::InitialSites::farthest : cvt::InitialSites::poisson;
+  co.seed = o.seed;
+  co.fix_regions = !o.no_fix;
+  ctx.settings()["method"] = "lloyd-gsp";
+  if (o.vertices) ctx.settings()["vertices"] = o.vertices;
+  else ctx.settings()["edge_length"] = co.edge_length;
+  ctx.settings()["max_iterations"] = o.iterations;
+  ctx.settings()["tolerance"] = o.tolerance;
+  ctx.settings()["init"] = o.init;
+  ctx.settings()["seed"] = o.seed;
+  ctx.settings()["fix_regions"] = co.fix_regions;
+
+  // A progress line per iteration: the bar counts iterations against the cap, the label
+  // carries the energy.
+  std::unique_ptr<cli::Progress> progress = ctx.progress("initial sites");
+  progress->update(0.0);
+  co.on_iteration = [&](const cvt::IterationInfo& info) {
+    char label[96];
+    std::snprintf(label, sizeof label, "lloyd %d/%d energy %.6g", info.iteration, info.max_iterations, info.energy);
+    progress.reset();
+    progress = ctx.progress(label);
+    progress->update(info.max_iterations ? double(info.iteration) / info.max_iterations : 1.0);
+  };
+  const cvt::CvtResult result = cvt::compute_cvt(in.mesh, co);
+  progress.reset();
+  cvt_app::report_cvt(ctx, result);
+
+  auto dual_scope = ctx.timer().scope("remesh");
+  const cvt::RemeshResult remesh = cvt::restricted_delaunay(result);
+  dual_scope.stop();
+  const TopologyReport topo_in = analyze_topology(in.mesh, build_connectivity(in.mesh));
+  const TopologyReport topo_out = analyze_topology(remesh.mesh, build_connectivity(remesh.mesh));
+  cvt_app::report_remesh(ctx, remesh, topo_in, topo_out);
+  if (topo_in.is_manifold() && (!topo_out.is_manifold() || topo_out.euler_characteristic != topo_in.euler_characteristic ||
+                                topo_out.boundary_loops != topo_in.boundary_loops))
+    ctx.note("the remesh does not have the input's topology (Euler characteristic " +
+             std::to_string(topo_out.euler_characteristic) + " vs " + std::to_string(topo_in.euler_characteristic) +
+             ", boundary loops " + std::to_string(topo_out.boundary_loops) + " vs " +
+             std::to_string(topo_in.boundary_loops) + (topo_out.is_manifold() ? "" : ", non-manifold") +
+             "): try more vertices or iterations");
+
+  if (ctx.stats_requested()) {
+    auto q = ctx.timer().scope("quality");
+    cvt::HausdorffOptions ho;
+    ho.samples = o.hausdorff_samples;
+    ho.seed = o.seed;
+    const cvt::MeshQuality mq = cvt::measure_mesh_quality(remesh.mesh);
+    const cvt::HausdorffDistance hd = cvt::hausdorff_distance(in.mesh, remesh.mesh, ho);
+    cvt_app::report_quality(ctx, mq, hd);
+  }
+
+  io::WriteOptions wo;
+  wo.ascii = o.ascii;
+  ctx.timer().time("write", [&] {
+    io::write_mesh(o.output, remesh.mesh, {}, wo);
+    if (!o.regions.empty()) cvt_app::write_regions(o.regions, in, result);
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  return gsp::cli::run_app(
+      argc, argv, "gsp-cvt",
+      "Geodesic centroidal Voronoi tessellation (Lloyd iterations with GSP) and isotropic remeshing by its "
+      "restricted Delaunay dual.",
+      [&](CLI::App& app) { add_options(app, options); },
+      [&](gsp::cli::Context& ctx) { run(ctx, options); });
+}

@@ -1,0 +1,126 @@
+#include "report.hpp"
+
+#include <gsp/io/mesh_io.hpp>
+
+#include <cstdint>
+
+namespace gsp::cvt_app {
+
+namespace {
+
+cli::Json topology_json(const TopologyReport& t) {
+  cli::Json j = cli::Json::object();
+  j["vertices"] = t.vertices;
+  j["faces"] = t.faces;
+  j["euler_characteristic"] = static_cast<long long>(t.euler_characteristic);
+  j["boundary_loops"] = t.boundary_loops;
+  j["components"] = t.components;
+  j["manifold"] = t.is_manifold();
+  j["nonmanifold_edges"] = t.nonmanifold_edges;
+  j["nonmanifold_vertices"] = t.nonmanifold_vertices;
+  j["inconsistent_edges"] = t.inconsistent_edges;
+  return j;
+}
+
+// A colour per region that neighbours are unlikely to share: the label hashed to a hue.
+std::array<std::uint8_t, 4> region_colour(Index label) {
+  if (label == kInvalidIndex) return {128, 128, 128, 255};
+  std::uint32_t x = label * 2654435761u;
+  x ^= x >> 15;
+  const double h = double(x % 3600) / 600.0;   // hue in [0, 6)
+  const double s = 0.55 + 0.4 * double((x >> 12) % 100) / 100.0, v = 0.95;
+  const double c = v * s, m = v - c, xx = c * (1 - std::abs(std::fmod(h, 2.0) - 1));
+  double r = 0, g = 0, b = 0;
+  switch (int(h)) {
+    case 0: r = c, g = xx; break;
+    case 1: r = xx, g = c; break;
+    case 2: g = c, b = xx; break;
+    case 3: g = xx, b = c; break;
+    case 4: r = xx, b = c; break;
+    default: r = c, b = xx; break;
+  }
+  auto byte = [&](double t) { return std::uint8_t(std::lround(255 * (t + m))); };
+  return {byte(r), byte(g), byte(b), 255};
+}
+
+}  // namespace
+
+void report_cvt(cli::Context& ctx, const cvt::CvtResult& cvt) {
+  const cvt::CvtStats& s = cvt.stats;
+  cli::Json& res = ctx.stats()["result"];
+  res["sites"] = cvt.sites.size();
+  res["iterations"] = s.iterations;
+  res["converged"] = s.converged;
+  res["energy"] = cvt.energy;
+  res["energy_curve"] = cli::Json::array_of(cvt.energy_curve);
+  res["area"] = cvt.area;
+  cli::Json& ops = ctx.operations();
+  ops["initial_sites"] = s.initial_sites;
+  ops["sites_added"] = s.sites_added;
+  ops["sites_relocated"] = s.sites_relocated;
+  ops["split_regions"] = s.split_regions;
+  ops["nondisk_regions"] = s.nondisk_regions;
+  ops["junction_fixes"] = s.junction_fixes;
+  ops["rejected_steps"] = s.rejected_steps;
+  ops["propagations"] = s.propagations;
+  ops["update_steps"] = s.update_steps;
+  ops["working_faces"] = s.working_faces;
+  ops["subdivisions"] = s.subdivisions;
+  cli::PhaseTimer& t = ctx.timer();
+  t.add("subdivide", s.timings.subdivide);
+  t.add("build", s.timings.prepare);
+  t.add("initial_sites", s.timings.initial);
+  t.add("compute", s.timings.propagate);
+  t.add("centroids", s.timings.centroids);
+  t.add("fix_regions", s.timings.fix);
+}
+
+void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const TopologyReport& input,
+                   const TopologyReport& output) {
+  cli::Json& res = ctx.stats()["remesh"];
+  res["vertices"] = remesh.mesh.num_vertices();
+  res["triangles"] = remesh.mesh.num_faces();
+  res["junctions"] = remesh.stats.junctions;
+  res["junctions_over_three"] = remesh.stats.junctions_over_three;
+  res["duplicate_triangles"] = remesh.stats.duplicate_triangles;
+  res["skipped_junctions"] = remesh.stats.skipped_junctions;
+  res["unused_sites"] = remesh.stats.unused_sites;
+  ctx.stats()["topology"]["input"] = topology_json(input);
+  ctx.stats()["topology"]["output"] = topology_json(output);
+}
+
+void report_quality(cli::Context& ctx, const cvt::MeshQuality& q, const cvt::HausdorffDistance& h) {
+  cli::Json& j = ctx.stats()["quality"];
+  j["min_angle"] = q.min_angle;
+  j["max_angle"] = q.max_angle;
+  j["mean_min_angle"] = q.mean_min_angle;
+  j["percent_below_30"] = 100.0 * q.below_30;
+  j["mean_aspect_ratio"] = q.mean_aspect_ratio;
+  j["max_aspect_ratio"] = q.max_aspect_ratio;
+  j["degenerate_triangles"] = q.degenerate;
+  j["mean_edge_length"] = q.mean_edge_length;
+  cli::Json& hist = j["valence_histogram"] = cli::Json::object();
+  for (std::size_t k = 0; k < q.valence_histogram.size(); ++k)
+    if (q.valence_histogram[k]) hist[std::to_string(k)] = q.valence_histogram[k];
+  cli::Json& hd = j["hausdorff"];
+  hd["input_to_output"] = h.a_to_b;
+  hd["output_to_input"] = h.b_to_a;
+  hd["two_sided"] = h.two_sided;
+  hd["mean"] = h.mean;
+  hd["diagonal"] = h.diagonal;
+  hd["percent_of_diagonal"] = 100.0 * h.relative;
+}
+
+void write_regions(const std::string& path, const cli::LoadedMesh& in, const cvt::CvtResult& cvt) {
+  const std::vector<Index> labels = in.to_file_order(cvt.vertex_label);
+  io::VertexAttributes attributes;
+  std::vector<std::int32_t> label(labels.size());
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    label[i] = labels[i] == kInvalidIndex ? -1 : std::int32_t(labels[i]);
+    attributes.colors.push_back(region_colour(labels[i]));
+  }
+  attributes.labels.emplace_back("label", std::move(label));
+  io::write_mesh(path, in.file_mesh(), attributes);
+}
+
+}  // namespace gsp::cvt_app

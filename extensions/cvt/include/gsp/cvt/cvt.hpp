@@ -1,0 +1,125 @@
+#pragma once
+// Geodesic centroidal Voronoi tessellation (CVT) by Lloyd iterations with GSP.
+//
+//   gsp::cvt::CvtOptions options;
+//   options.sites = 2000;                          // or options.edge_length = ...
+//   gsp::cvt::CvtResult cvt = gsp::cvt::compute_cvt(mesh, options);
+//   cvt.sites[i].position, cvt.energy_curve, cvt.vertex_label (per input vertex)
+//   gsp::TriangleMesh remeshed = gsp::cvt::restricted_delaunay(cvt);   // remesh.hpp
+//
+// Every Lloyd iteration is one multi-source GSP propagation from all sites (points inside
+// faces); its per-face labels are the geodesic Voronoi regions. The work happens on a
+// "working mesh": the input split 1-to-4 (edge midpoints, so the surface is unchanged) until
+// it has at least `min_faces_per_site` faces per site, because regions a few faces wide have
+// centroids and boundaries only as fine as the faces. See docs/cvt.md.
+#include <gsp/geodesics.hpp>
+#include <gsp/mesh.hpp>
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace gsp::cvt {
+
+enum class InitialSites { poisson, farthest };
+
+// Called after every evaluated iteration (0 = the initial sites).
+struct IterationInfo {
+  int iteration = 0;
+  int max_iterations = 0;
+  double energy = 0;
+  std::size_t sites = 0;
+};
+using IterationFn = std::function<void(const IterationInfo&)>;
+
+struct CvtOptions {
+  // Exactly one of sites (> 0) and edge_length (> 0, model units; converted to a site count
+  // by N = 2 A / (sqrt(3) L^2), the vertex count of an equilateral triangulation of area A).
+  std::size_t sites = 0;
+  double edge_length = 0;
+  int max_iterations = 50;
+  // Stop when (E_prev - E) / E_prev < tolerance.
+  double tolerance = 1e-4;
+  InitialSites initial = InitialSites::poisson;
+  std::uint64_t seed = 1;
+  std::size_t min_faces_per_site = 24;   // working-mesh resolution (see above); 0: no split
+  int max_subdivisions = 3;              // at most 4^3 = 64 faces per input face
+  // Detect regions that are not a single disk (several components, or one that wraps around a
+  // handle) and add a site there; also keep at least 3 regions along every boundary loop and
+  // one run of regions per loop (a region touching a loop twice gets a second site).
+  bool fix_regions = true;
+  // Sites whose region touches the mesh boundary are kept on the boundary: they move to the
+  // point of their region's boundary arc closest to the area centroid (the constrained
+  // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
+  // mesh to have the input's boundary.
+  bool boundary_sites = true;
+  IterationFn on_iteration;
+};
+
+// A site on the input mesh: (face, barycentric) of the input, and its position.
+struct Site {
+  Index face = kInvalidIndex;
+  std::array<double, 3> barycentric{1, 0, 0};
+  Vec3 position;
+  bool on_boundary = false;
+};
+
+struct CvtTimings {   // seconds
+  double subdivide = 0, prepare = 0, initial = 0, propagate = 0, centroids = 0, fix = 0;
+};
+
+struct CvtStats {
+  int iterations = 0;              // Lloyd steps accepted
+  int rejected_steps = 0;          // steps whose energy rose and were shortened
+  std::size_t initial_sites = 0;
+  std::size_t sites_added = 0;     // by the region fixes
+  std::size_t sites_relocated = 0; // sites that lost their whole region and were moved
+  std::size_t split_regions = 0;   // regions found with several components (all iterations)
+  std::size_t nondisk_regions = 0; // single-component regions that are not disks
+  std::size_t junction_fixes = 0;  // sites added where the dual would not be manifold
+  std::size_t working_faces = 0;
+  int subdivisions = 0;
+  bool converged = false;          // tolerance met (else the iteration cap or no decrease)
+  std::uint64_t update_steps = 0;  // GSP update steps over all propagations
+  std::size_t propagations = 0;
+  CvtTimings timings;
+};
+
+// The working mesh: the input split `levels` times 1-to-4. Its first V vertices are the
+// input's vertices; face f of it lies in input face parent[f], its corner k at the parent's
+// barycentric coordinates corner_bary[f][k].
+struct WorkingMesh {
+  TriangleMesh mesh;
+  std::vector<Index> parent;
+  std::vector<std::array<std::array<double, 3>, 3>> corner_bary;
+  int levels = 0;
+};
+WorkingMesh subdivide(const TriangleMesh& mesh, int levels);
+
+struct CvtResult {
+  std::vector<Site> sites;
+  std::vector<double> energy_curve;     // energy of the accepted sites, per iteration (0 = initial)
+  double energy = 0;                    // last entry of energy_curve
+  // Labels of the final sites' Voronoi regions: per input vertex, and on the working mesh
+  // per vertex and per face (index into sites; kInvalidIndex where unreached).
+  std::vector<Index> vertex_label;
+  WorkingMesh working;
+  std::vector<Index> working_vertex_label;
+  std::vector<Index> working_face_label;
+  std::vector<Vec3> working_site_position;   // = sites[i].position
+  std::vector<Index> working_site_face;      // the site's face on the working mesh
+  double area = 0, diagonal = 0;
+  CvtStats stats;
+};
+
+// Throws InvalidInput for contradictory options (both or neither of sites and edge_length),
+// a mesh without area, or more sites than the working mesh has vertices.
+CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options);
+
+// The CVT energy of a labelling: sum over faces of the integral of the squared geodesic
+// distance to the face's source, by the edge-midpoint rule (exact for quadratics) on the
+// distance sigma + |p - S| of the face's virtual source. Needs want_face_sources.
+double cvt_energy(const TriangleMesh& mesh, const GeodesicResult& result);
+
+}  // namespace gsp::cvt

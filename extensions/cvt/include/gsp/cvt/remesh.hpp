@@ -1,0 +1,33 @@
+#pragma once
+// Remeshing by the restricted Delaunay triangulation: the dual of a CVT's Voronoi regions.
+// Sites become vertices; every place where three or more regions meet (a working-mesh
+// vertex whose faces carry three or more labels) becomes a triangle (a polygon fan for more
+// than three), ordered the way the regions turn around that vertex, so each dual triangle has
+// the orientation of the input faces under it. At the boundary, the outside counts as one
+// more region that is then left out: the dual's boundary edges join the regions that follow
+// each other along the input's boundary loops.
+//
+//   auto cvt = gsp::cvt::compute_cvt(mesh, options);
+//   gsp::cvt::RemeshResult r = gsp::cvt::restricted_delaunay(cvt);
+//   r.mesh   // sites as vertices (sites no triangle uses are dropped)
+#include <gsp/cvt/cvt.hpp>
+
+namespace gsp::cvt {
+
+struct RemeshStats {
+  std::size_t junctions = 0;            // working vertices where >= 3 regions meet
+  std::size_t junctions_over_three = 0; // of which more than three (fanned polygons)
+  std::size_t duplicate_triangles = 0;  // the same three regions meeting again (dropped)
+  std::size_t skipped_junctions = 0;    // a region met twice around one vertex, or a non-manifold vertex
+  std::size_t unused_sites = 0;         // sites without a triangle (not in the output)
+};
+
+struct RemeshResult {
+  TriangleMesh mesh;
+  std::vector<Index> vertex_site;   // output vertex -> index into cvt.sites
+  RemeshStats stats;
+};
+
+RemeshResult restricted_delaunay(const CvtResult& cvt);
+
+}  // namespace gsp::cvt

@@ -1,0 +1,114 @@
+#include <gsp/cvt/closest_point_index.hpp>
+#include <gsp/errors.hpp>
+
+#include <embree3/rtcore.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace gsp::cvt {
+
+struct ClosestPointIndex::Impl {
+  const TriangleMesh& mesh;
+  std::vector<Index> faces;   // Embree primitive -> mesh face
+  Vec3 origin;                // positions are stored as floats relative to it
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+
+  explicit Impl(const TriangleMesh& m) : mesh(m) {}
+  ~Impl() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+};
+
+namespace {
+
+struct Query {
+  const ClosestPointIndex* self;
+  const TriangleMesh* mesh;
+  const std::vector<Index>* faces;
+  Vec3 p;
+  SurfacePoint best;
+};
+
+bool query_triangle(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<Query*>(args->userPtr);
+  const Index f = (*q->faces)[args->primID];
+  const Triangle& t = q->mesh->triangles[f];
+  const Vec3 a = q->mesh->positions[t[0]], b = q->mesh->positions[t[1]], c = q->mesh->positions[t[2]];
+  const std::array<double, 3> w = closest_point_on_triangle(q->p, a, b, c);
+  const Vec3 x = w[0] * a + w[1] * b + w[2] * c;
+  const double d = distance(x, q->p);
+  if (d >= q->best.distance) return false;
+  q->best.face = f;
+  q->best.barycentric = w;
+  q->best.position = x;
+  q->best.distance = d;
+  // Shrink the search, with a margin for the float boxes.
+  args->query->radius = float(d * (1 + 1e-5)) + 1e-30f;
+  return true;
+}
+
+}  // namespace
+
+ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {
+  Impl& s = *impl_;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) s.faces.push_back(f);
+  }
+  if (s.faces.empty()) throw InvalidInput("closest point index: the mesh has no proper triangle");
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : mesh.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  s.origin = 0.5 * (lo + hi);
+  s.device = rtcNewDevice(nullptr);
+  if (!s.device) throw Error("closest point index: Embree could not create a device");
+  s.scene = rtcNewScene(s.device);
+  RTCGeometry g = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                        3 * sizeof(float), mesh.num_vertices()));
+  auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                             3 * sizeof(unsigned), s.faces.size()));
+  if (!v || !idx) {
+    rtcReleaseGeometry(g);
+    throw Error("closest point index: Embree could not allocate the mesh");
+  }
+  for (std::size_t i = 0; i < mesh.num_vertices(); ++i) {
+    const Vec3 p = mesh.positions[i] - s.origin;
+    v[3 * i] = float(p.x), v[3 * i + 1] = float(p.y), v[3 * i + 2] = float(p.z);
+  }
+  for (std::size_t i = 0; i < s.faces.size(); ++i)
+    for (int k = 0; k < 3; ++k) idx[3 * i + k] = mesh.triangles[s.faces[i]][k];
+  rtcCommitGeometry(g);
+  rtcAttachGeometry(s.scene, g);
+  rtcReleaseGeometry(g);
+  rtcCommitScene(s.scene);
+  if (rtcGetDeviceError(s.device) != RTC_ERROR_NONE) throw Error("closest point index: Embree failed to build the scene");
+}
+
+ClosestPointIndex::~ClosestPointIndex() = default;
+
+SurfacePoint ClosestPointIndex::closest(Vec3 p) const {
+  const Impl& s = *impl_;
+  Query q{this, &s.mesh, &s.faces, p, {}};
+  q.best.distance = std::numeric_limits<double>::infinity();
+  const Vec3 local = p - s.origin;
+  RTCPointQuery pq;
+  pq.x = float(local.x), pq.y = float(local.y), pq.z = float(local.z);
+  pq.time = 0;
+  pq.radius = std::numeric_limits<float>::infinity();
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  // The callback reads positions in model units; Embree's boxes are in the shifted frame, and
+  // a shift changes no distance.
+  rtcPointQuery(s.scene, &pq, &context, query_triangle, &q);
+  return q.best;
+}
+
+}  // namespace gsp::cvt

@@ -1,0 +1,453 @@
+// Lloyd iterations for a geodesic CVT: propagate from all sites (GSP, labels), move every site
+// to its region's centroid projected back onto the region, keep the step only if the energy
+// went down. See docs/cvt.md for the choices made here.
+#include "boundary_loops.hpp"
+#include "junctions.hpp"
+#include "regions.hpp"
+#include "working_geometry.hpp"
+
+#include <gsp/cvt/cvt.hpp>
+#include <gsp/errors.hpp>
+#include <gsp/sampling/sampler.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace gsp::cvt {
+
+namespace {
+
+using namespace detail;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+struct Evaluation {
+  GeodesicResult result;
+  std::vector<Index> label;   // per face, after small detached pieces were absorbed
+  Components components;      // of `label`
+  Buckets buckets;            // faces per site, of `label`
+  double energy = 0;
+};
+
+class Lloyd {
+ public:
+  Lloyd(const WorkingGeometry& g, const GeodesicSolver& solver, const CvtOptions& o, CvtStats& stats)
+      : g_(g), solver_(solver), o_(o), stats_(stats) {}
+
+  Evaluation evaluate(const std::vector<SurfaceSite>& sites) {
+    auto t0 = Clock::now();
+    std::vector<Source> sources;
+    sources.reserve(sites.size());
+    for (const SurfaceSite& s : sites) sources.push_back(Source::in_face(s.face, s.barycentric));
+    GeodesicOptions go;
+    go.want_face_sources = true;
+    Evaluation e;
+    e.result = solver_.compute(sources, go);
+    stats_.propagations++;
+    stats_.update_steps += e.result.stats.update_steps;
+    stats_.timings.propagate += seconds_since(t0);
+    t0 = Clock::now();
+    e.energy = cvt_energy(g_.mesh, e.result);
+    e.label = e.result.face_source;
+    const std::vector<Index> site_face = faces_of(sites);
+    // Pieces of a region a few faces large are artefacts of face-granular labels (a face whose
+    // centroid is barely on the other side): they take their neighbours' label.
+    Components c = find_components(g_, e.label, site_face, sites.size());
+    if (absorb_small_components(g_, e.label, c, min_piece_area(sites.size())) > 0)
+      c = find_components(g_, e.label, site_face, sites.size());
+    e.components = std::move(c);
+    e.buckets = bucket_faces(e.label, sites.size());
+    stats_.timings.centroids += seconds_since(t0);
+    return e;
+  }
+
+  // Where each site moves: its main component's area centroid, t of the way from the site,
+  // projected onto that component (or onto its boundary arc for boundary sites).
+  std::vector<SurfaceSite> step(const Evaluation& e, const std::vector<SurfaceSite>& sites, double t,
+                                bool keep_boundary_state) const {
+    std::vector<SurfaceSite> out(sites.size());
+    for (Index s = 0; s < sites.size(); ++s) {
+      const Index k = e.components.main[s];
+      if (k == kInvalidIndex || !(e.components.area[k] > 0)) {
+        out[s] = sites[s];   // lost its region: fix_regions relocates it
+        continue;
+      }
+      const Vec3 c = (1.0 / e.components.area[k]) * e.components.moment[k];
+      const Vec3 target = sites[s].position + t * (c - sites[s].position);
+      bool boundary = o_.boundary_sites && touches_boundary(e, s, k);
+      if (keep_boundary_state) boundary = boundary && sites[s].on_boundary;
+      out[s] = project(e, s, k, target, boundary);
+    }
+    return out;
+  }
+
+  // Detached parts, regions that are not disks, boundary loops with fewer than three regions
+  // or a region met twice along them, sites without a region. Returns true if sites changed.
+  bool fix(const Evaluation& e, std::vector<SurfaceSite>& sites) {
+    const auto t0 = Clock::now();
+    const Components& c = e.components;
+    const std::size_t n = sites.size();
+    std::vector<SurfaceSite> added;
+    std::vector<bool> flagged(n, false);
+    const std::vector<long> chi = component_euler(g_, c);
+    for (Index k = 0; k < c.label.size(); ++k) {
+      const Index s = c.label[k];
+      if (c.main[s] != k) {   // a detached part large enough to survive absorption
+        stats_.split_regions++;
+        if (flagged[s]) continue;
+        flagged[s] = true;
+        added.push_back(closest_in_component(e, k, (1.0 / c.area[k]) * c.moment[k]));
+      } else if (chi[k] <= 0 && !flagged[s]) {   // one piece, but an annulus or worse
+        stats_.nondisk_regions++;
+        flagged[s] = true;
+        added.push_back(farthest_in_component(e, k));
+      }
+    }
+    fix_boundary(e, flagged, added);
+    fix_junctions(e, added);
+    // Sites that lost their whole region (another site took their face): to the farthest points.
+    std::vector<Index> lost;
+    for (Index s = 0; s < n; ++s)
+      if (c.main[s] == kInvalidIndex) lost.push_back(s);
+    if (!lost.empty()) {
+      std::vector<Index> order(g_.mesh.num_faces());
+      std::iota(order.begin(), order.end(), Index(0));
+      const auto& d = e.result.face_distance;
+      std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+        const double da = std::isfinite(d[a]) ? d[a] : -1, db = std::isfinite(d[b]) ? d[b] : -1;
+        return da > db;
+      });
+      const double spacing = std::sqrt(g_.total_area / double(n));
+      std::vector<Vec3> taken;
+      std::size_t next = 0;
+      for (Index s : lost) {
+        while (next < order.size()) {
+          const Index f = order[next++];
+          if (!(g_.area[f] > 0)) continue;
+          bool near = false;
+          for (const Vec3& p : taken) near = near || distance(p, g_.centroid[f]) < spacing;
+          if (near) continue;
+          sites[s] = g_.at(f, {1.0 / 3, 1.0 / 3, 1.0 / 3});
+          taken.push_back(sites[s].position);
+          stats_.sites_relocated++;
+          break;
+        }
+      }
+    }
+    for (const SurfaceSite& s : added) sites.push_back(s);
+    stats_.sites_added += added.size();
+    stats_.timings.fix += seconds_since(t0);
+    return !added.empty() || !lost.empty();
+  }
+
+  // Sites whose region touches the boundary, moved onto it (before the first Lloyd step).
+  std::vector<SurfaceSite> snap_to_boundary(const Evaluation& e, const std::vector<SurfaceSite>& sites) const {
+    std::vector<SurfaceSite> out = sites;
+    for (Index s = 0; s < sites.size(); ++s) {
+      const Index k = e.components.main[s];
+      if (k != kInvalidIndex && touches_boundary(e, s, k)) out[s] = project(e, s, k, sites[s].position, true);
+    }
+    return out;
+  }
+
+ private:
+  double min_piece_area(std::size_t sites) const { return 0.2 * g_.total_area / double(std::max<std::size_t>(sites, 1)); }
+
+  static std::vector<Index> faces_of(const std::vector<SurfaceSite>& sites) {
+    std::vector<Index> f(sites.size());
+    for (std::size_t i = 0; i < sites.size(); ++i) f[i] = sites[i].face;
+    return f;
+  }
+
+  bool touches_boundary(const Evaluation& e, Index s, Index k) const {
+    for (Index i = e.buckets.begin[s]; i < e.buckets.begin[s + 1]; ++i) {
+      const Index f = e.buckets.faces[i];
+      if (e.components.of_face[f] != k) continue;
+      for (Index j = 0; j < 3; ++j)
+        if (g_.boundary_halfedge[3 * f + j]) return true;
+    }
+    return false;
+  }
+
+  SurfaceSite project(const Evaluation& e, Index s, Index k, Vec3 p, bool boundary) const {
+    SurfaceSite best;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (Index i = e.buckets.begin[s]; i < e.buckets.begin[s + 1]; ++i) {
+      const Index f = e.buckets.faces[i];
+      if (e.components.of_face[f] != k) continue;
+      for (Index j = 0; j < (boundary ? 3u : 1u); ++j) {
+        if (boundary && !g_.boundary_halfedge[3 * f + j]) continue;
+        const SurfaceSite q = boundary ? g_.closest_on_halfedge(3 * f + j, p) : g_.closest_on_face(f, p);
+        const double d = distance(q.position, p);
+        if (d < best_d) best_d = d, best = q;
+      }
+    }
+    return best;
+  }
+
+  SurfaceSite closest_in_component(const Evaluation& e, Index k, Vec3 p) const {
+    const Index s = e.components.label[k];
+    return project(e, s, k, p, false);
+  }
+
+  SurfaceSite farthest_in_component(const Evaluation& e, Index k) const {
+    const Index s = e.components.label[k];
+    Index best = kInvalidIndex;
+    for (Index i = e.buckets.begin[s]; i < e.buckets.begin[s + 1]; ++i) {
+      const Index f = e.buckets.faces[i];
+      if (e.components.of_face[f] != k || !(g_.area[f] > 0)) continue;
+      if (best == kInvalidIndex || e.result.face_distance[f] > e.result.face_distance[best]) best = f;
+    }
+    return g_.at(best, {1.0 / 3, 1.0 / 3, 1.0 / 3});
+  }
+
+  void fix_boundary(const Evaluation& e, std::vector<bool>& flagged, std::vector<SurfaceSite>& added) {
+    std::map<Index, int> runs;   // label -> runs along all loops
+    std::map<Index, Index> second_run_halfedge;
+    for (const std::vector<Index>& loop : loops_) {
+      std::vector<std::pair<Index, std::size_t>> seq;   // (label, first position) per run
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Index l = e.label[face_of(loop[i])];
+        if (seq.empty() || seq.back().first != l) seq.push_back({l, i});
+      }
+      if (seq.size() > 1 && seq.front().first == seq.back().first) seq.pop_back();   // cyclic
+      std::vector<Index> distinct;
+      for (auto& [l, i] : seq) distinct.push_back(l);
+      std::sort(distinct.begin(), distinct.end());
+      distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+      if (distinct.size() < 3 && loop.size() >= 3) {
+        // A hole with fewer than three regions around it has no triangle in the dual: spread
+        // sites along it.
+        for (std::size_t part : {loop.size() / 3, 2 * loop.size() / 3}) {
+          SurfaceSite s = g_.closest_on_halfedge(loop[part], g_.mesh.positions[from_vertex(g_.mesh, loop[part])]);
+          added.push_back(s);
+        }
+        continue;
+      }
+      for (std::size_t r = 0; r < seq.size(); ++r) {
+        const Index l = seq[r].first;
+        if (l == kInvalidIndex) continue;
+        if (++runs[l] == 2) {
+          const std::size_t end = r + 1 < seq.size() ? seq[r + 1].second : loop.size();
+          second_run_halfedge[l] = loop[(seq[r].second + end) / 2];
+        }
+      }
+    }
+    for (auto& [l, h] : second_run_halfedge) {
+      if (flagged[l]) continue;
+      flagged[l] = true;
+      stats_.split_regions++;
+      added.push_back(g_.closest_on_halfedge(h, 0.5 * (g_.mesh.positions[from_vertex(g_.mesh, h)] +
+                                                      g_.mesh.positions[to_vertex(g_.mesh, h)])));
+    }
+  }
+
+  // Where the dual would not be a manifold (the same three regions meeting twice, a region met
+  // twice around a vertex, two regions whose border has more than two ends): a new site at
+  // that vertex splits the region that causes it.
+  void fix_junctions(const Evaluation& e, std::vector<SurfaceSite>& added) {
+    const DualTriangles d = dual_triangles(g_.mesh, g_.conn, e.label);
+    std::vector<Index> vertices = d.trouble_vertices;
+    for (Index v : overused_edge_vertices(d)) vertices.push_back(v);
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const double spacing = 0.5 * std::sqrt(g_.total_area / double(std::max<std::size_t>(e.buckets.begin.size() - 1, 1)));
+    std::vector<Vec3> placed;
+    for (Index v : vertices) {
+      const Vec3 p = g_.mesh.positions[v];
+      bool near = false;
+      for (const Vec3& q : placed) near = near || distance(p, q) < spacing;
+      for (const SurfaceSite& q : added) near = near || distance(p, q.position) < spacing;
+      if (near) continue;
+      const Index corner = g_.conn.vertex_corners[g_.conn.vertex_corner_begin[v]];
+      std::array<double, 3> bary{0, 0, 0};
+      bary[corner_of(corner)] = 1;
+      added.push_back(g_.at(face_of(corner), bary));
+      placed.push_back(p);
+      stats_.junction_fixes++;
+    }
+  }
+
+ public:
+  std::vector<std::vector<Index>> loops_;
+
+ private:
+  const WorkingGeometry& g_;
+  const GeodesicSolver& solver_;
+  const CvtOptions& o_;
+  CvtStats& stats_;
+};
+
+std::size_t site_count(const CvtOptions& o, double area) {
+  if ((o.sites > 0) == (o.edge_length > 0)) throw InvalidInput("cvt: give exactly one of sites and edge_length");
+  if (o.sites > 0) return o.sites;
+  if (!std::isfinite(o.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
+  const double n = 2.0 * area / (std::sqrt(3.0) * o.edge_length * o.edge_length);
+  return std::max<std::size_t>(4, std::size_t(std::llround(n)));
+}
+
+Site to_input(const WorkingMesh& w, const SurfaceSite& s) {
+  Site out;
+  out.face = w.parent[s.face];
+  out.barycentric = {0, 0, 0};
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) out.barycentric[j] += s.barycentric[k] * w.corner_bary[s.face][k][j];
+  out.position = s.position;
+  out.on_boundary = s.on_boundary;
+  return out;
+}
+
+// Initial sites. Poisson-disk sampling runs on the input mesh (its radius search costs a few
+// sampling runs, 4^levels times cheaper there than on the working mesh) and each sample is
+// found again among the working faces of its input face (they are contiguous: the children
+// of face f are 4f..4f+3 at every level). Farthest-point sampling picks vertices, so it runs
+// on the working mesh when the input has too few.
+std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMesh& w, const WorkingGeometry& g,
+                                       std::size_t n, const CvtOptions& o) {
+  sampling::SamplingOptions so;
+  so.mode = o.initial == InitialSites::farthest ? sampling::Mode::farthest : sampling::Mode::poisson;
+  so.count = n;
+  so.seed = o.seed;
+  so.count_tolerance = 0.02;
+  std::vector<SurfaceSite> sites;
+  const bool on_input = so.mode == sampling::Mode::poisson || n <= mesh.num_vertices() / 2;
+  if (!on_input) {
+    const sampling::Sampler sampler(w.mesh);
+    for (const sampling::Sample& s : sampler.sample(so).samples) sites.push_back(g.at(s.face, s.barycentric));
+    return sites;
+  }
+  const sampling::Sampler sampler(mesh);
+  const Index per_face = Index(1) << (2 * w.levels);
+  for (const sampling::Sample& s : sampler.sample(so).samples) {
+    SurfaceSite best;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (Index f = s.face * per_face; f < (s.face + 1) * per_face; ++f) {
+      const SurfaceSite q = g.closest_on_face(f, s.position);
+      const double d = distance(q.position, s.position);
+      if (d < best_d) best_d = d, best = q;
+    }
+    sites.push_back(best);
+  }
+  // The radius search meets the count within 2%: trim the last accepted samples (the vertex
+  // fill, which plugs the smallest gaps) or add area-uniform points; Lloyd evens both out.
+  if (sites.size() > n) sites.resize(n);
+  const sampling::AreaSampler uniform(w.mesh);
+  sampling::Random random(o.seed ^ 0x5eed5eedULL);
+  while (sites.size() < n) {
+    const sampling::Sample s = uniform.draw(w.mesh, random);
+    sites.push_back(g.at(s.face, s.barycentric));
+  }
+  return sites;
+}
+
+}  // namespace
+
+CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
+  validate(mesh);
+  if (options.max_iterations < 0) throw InvalidInput("cvt: negative iteration cap");
+  if (!(options.tolerance >= 0)) throw InvalidInput("cvt: the tolerance must be >= 0");
+  CvtResult out;
+  CvtStats& stats = out.stats;
+  auto t0 = Clock::now();
+  double area = 0;
+  for (const Triangle& t : mesh.triangles)
+    area += 0.5 * norm(cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]));
+  if (!(area > 0)) throw InvalidInput("cvt: the mesh has no area");
+  const std::size_t n = site_count(options, area);
+  int levels = 0;
+  while (levels < options.max_subdivisions &&
+         double(mesh.num_faces()) * std::pow(4.0, levels) < double(options.min_faces_per_site) * double(n))
+    ++levels;
+  out.working = subdivide(mesh, levels);
+  stats.subdivisions = levels;
+  stats.working_faces = out.working.mesh.num_faces();
+  stats.timings.subdivide = seconds_since(t0);
+  if (n > out.working.mesh.num_vertices())
+    throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
+                       " times) has only " + std::to_string(out.working.mesh.num_vertices()) + " vertices");
+
+  t0 = Clock::now();
+  const WorkingGeometry g(out.working.mesh);
+  const GeodesicSolver solver(out.working.mesh);
+  out.area = g.total_area;
+  out.diagonal = g.diagonal;
+  stats.timings.prepare = seconds_since(t0);
+
+  t0 = Clock::now();
+  std::vector<SurfaceSite> sites = initial_sites(mesh, out.working, g, n, options);
+  stats.initial_sites = sites.size();
+  stats.timings.initial = seconds_since(t0);
+
+  Lloyd lloyd(g, solver, options, stats);
+  lloyd.loops_ = boundary_loops(g);
+  Evaluation e = lloyd.evaluate(sites);
+  if (options.fix_regions && lloyd.fix(e, sites)) e = lloyd.evaluate(sites);
+  if (options.boundary_sites && !lloyd.loops_.empty()) {
+    sites = lloyd.snap_to_boundary(e, sites);
+    e = lloyd.evaluate(sites);
+  }
+  out.energy_curve.push_back(e.energy);
+  auto report = [&](int it) {
+    if (options.on_iteration) options.on_iteration({it, options.max_iterations, e.energy, sites.size()});
+  };
+  report(0);
+  for (int it = 1; it <= options.max_iterations; ++it) {
+    bool accepted = false;
+    std::vector<SurfaceSite> candidate;
+    Evaluation ce;
+    // Full step, then half and quarter steps: a Lloyd step decreases the exact energy, but the
+    // labels and centroids here are approximate, so near convergence a step can go up.
+    for (double t : {1.0, 0.5, 0.25}) {
+      candidate = lloyd.step(e, sites, t, t < 1.0);
+      ce = lloyd.evaluate(candidate);
+      if (ce.energy <= e.energy) {
+        accepted = true;
+        break;
+      }
+      stats.rejected_steps++;
+    }
+    if (!accepted) break;   // no decrease: the previous sites stay
+    const double relative = (e.energy - ce.energy) / e.energy;
+    sites = std::move(candidate);
+    e = std::move(ce);
+    bool fixed_now = false;
+    if (options.fix_regions) {
+      std::vector<SurfaceSite> fixed = sites;
+      if (lloyd.fix(e, fixed)) {
+        // Adding a site never increases the exact energy; keep the fix only if the estimate
+        // agrees, so the curve stays monotone.
+        Evaluation fe = lloyd.evaluate(fixed);
+        if (fe.energy <= e.energy) {
+          sites = std::move(fixed);
+          e = std::move(fe);
+          fixed_now = true;
+        }
+      }
+    }
+    stats.iterations = it;
+    out.energy_curve.push_back(e.energy);
+    report(it);
+    // After a fix the new sites still need Lloyd steps of their own.
+    if (relative < options.tolerance && !fixed_now) {
+      stats.converged = true;
+      break;
+    }
+  }
+  out.energy = e.energy;
+
+  out.working_face_label = e.label;
+  out.working_vertex_label = e.result.vertex_source;
+  out.vertex_label.assign(e.result.vertex_source.begin(), e.result.vertex_source.begin() + long(mesh.num_vertices()));
+  for (const SurfaceSite& s : sites) {
+    out.sites.push_back(to_input(out.working, s));
+    out.working_site_position.push_back(s.position);
+    out.working_site_face.push_back(s.face);
+  }
+  return out;
+}
+
+}  // namespace gsp::cvt

@@ -1,0 +1,79 @@
+// 1-to-4 midpoint split: the surface does not change (every new vertex is an edge midpoint),
+// only the resolution at which Voronoi regions are resolved.
+#include <gsp/connectivity.hpp>
+#include <gsp/cvt/cvt.hpp>
+#include <gsp/errors.hpp>
+
+namespace gsp::cvt {
+
+namespace {
+
+using Bary = std::array<double, 3>;
+
+Bary mid(const Bary& a, const Bary& b) { return {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])}; }
+
+void split_once(WorkingMesh& w) {
+  const TriangleMesh& m = w.mesh;
+  const Connectivity conn = build_connectivity(m);
+  TriangleMesh out;
+  out.positions = m.positions;
+  // One new vertex per undirected edge; halfedges whose ends coincide get their own.
+  std::vector<Index> edge_vertex(conn.num_edges(), kInvalidIndex);
+  std::vector<Index> halfedge_vertex(conn.num_halfedges());
+  for (Index h = 0; h < conn.num_halfedges(); ++h) {
+    const Index e = conn.halfedge_edge[h];
+    Index* slot = e == kInvalidIndex ? nullptr : &edge_vertex[e];
+    if (slot && *slot != kInvalidIndex) {
+      halfedge_vertex[h] = *slot;
+      continue;
+    }
+    const Index v = Index(out.positions.size());
+    out.positions.push_back(0.5 * (m.positions[from_vertex(m, h)] + m.positions[to_vertex(m, h)]));
+    if (slot) *slot = v;
+    halfedge_vertex[h] = v;
+  }
+  std::vector<Index> parent;
+  std::vector<std::array<Bary, 3>> corner_bary;
+  out.triangles.reserve(4 * m.num_faces());
+  parent.reserve(4 * m.num_faces());
+  corner_bary.reserve(4 * m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    const Triangle& t = m.triangles[f];
+    const Index a = halfedge_vertex[3 * f], b = halfedge_vertex[3 * f + 1], c = halfedge_vertex[3 * f + 2];
+    const auto& cb = w.corner_bary[f];
+    const Bary ma = mid(cb[0], cb[1]), mb = mid(cb[1], cb[2]), mc = mid(cb[2], cb[0]);
+    // Children keep the parent's orientation.
+    out.triangles.push_back({t[0], a, c});
+    corner_bary.push_back({cb[0], ma, mc});
+    out.triangles.push_back({a, t[1], b});
+    corner_bary.push_back({ma, cb[1], mb});
+    out.triangles.push_back({c, b, t[2]});
+    corner_bary.push_back({mc, mb, cb[2]});
+    out.triangles.push_back({a, b, c});
+    corner_bary.push_back({ma, mb, mc});
+    for (int k = 0; k < 4; ++k) parent.push_back(w.parent[f]);
+  }
+  w.mesh = std::move(out);
+  w.parent = std::move(parent);
+  w.corner_bary = std::move(corner_bary);
+  ++w.levels;
+}
+
+}  // namespace
+
+WorkingMesh subdivide(const TriangleMesh& mesh, int levels) {
+  if (levels < 0) throw InvalidInput("cvt: negative subdivision level");
+  WorkingMesh w;
+  w.mesh.positions = mesh.positions;
+  w.mesh.triangles = mesh.triangles;
+  w.parent.resize(mesh.num_faces());
+  w.corner_bary.resize(mesh.num_faces());
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    w.parent[f] = f;
+    w.corner_bary[f] = {Bary{1, 0, 0}, Bary{0, 1, 0}, Bary{0, 0, 1}};
+  }
+  for (int i = 0; i < levels; ++i) split_once(w);
+  return w;
+}
+
+}  // namespace gsp::cvt

@@ -1,0 +1,64 @@
+#include "working_geometry.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace gsp::cvt::detail {
+
+WorkingGeometry::WorkingGeometry(const TriangleMesh& m) : mesh(m), conn(build_connectivity(m)) {
+  area.resize(m.num_faces());
+  centroid.resize(m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    const Triangle& t = m.triangles[f];
+    const Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    area[f] = repeated ? 0.0 : 0.5 * norm(cross(b - a, c - a));
+    centroid[f] = (1.0 / 3.0) * (a + b + c);
+    total_area += area[f];
+  }
+  boundary_halfedge.resize(conn.num_halfedges());
+  for (Index h = 0; h < conn.num_halfedges(); ++h)
+    boundary_halfedge[h] = conn.halfedge_edge[h] != kInvalidIndex && conn.radial_next[h] == h;
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Triangle& t : m.triangles)
+    for (Index v : t) {
+      const Vec3 p = m.positions[v];
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+  diagonal = m.num_faces() ? distance(lo, hi) : 0.0;
+}
+
+SurfaceSite WorkingGeometry::at(Index face, std::array<double, 3> b) const {
+  // Clamp and renormalise: GSP checks that barycentrics are >= 0 and sum to 1.
+  for (double& x : b) x = std::max(0.0, x);
+  const double s = b[0] + b[1] + b[2];
+  if (s > 0) for (double& x : b) x /= s;
+  else b = {1, 0, 0};
+  const Triangle& t = mesh.triangles[face];
+  SurfaceSite site;
+  site.face = face;
+  site.barycentric = b;
+  site.position = b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] + b[2] * mesh.positions[t[2]];
+  return site;
+}
+
+SurfaceSite WorkingGeometry::closest_on_face(Index f, Vec3 p) const {
+  const Triangle& t = mesh.triangles[f];
+  return at(f, closest_point_on_triangle(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+}
+
+SurfaceSite WorkingGeometry::closest_on_halfedge(Index h, Vec3 p) const {
+  const Vec3 a = mesh.positions[from_vertex(mesh, h)], b = mesh.positions[to_vertex(mesh, h)];
+  const Vec3 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double s = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  std::array<double, 3> bary{0, 0, 0};
+  bary[corner_of(h)] = 1 - s;
+  bary[corner_of(next_halfedge(h))] = s;
+  SurfaceSite site = at(face_of(h), bary);
+  site.on_boundary = true;
+  return site;
+}
+
+}  // namespace gsp::cvt::detail

@@ -1,0 +1,100 @@
+// gsp-cvt end to end: the remesh and the regions file read back, the stats JSON, the error
+// contract (exit 1 for bad input, 2 for usage errors, nothing left behind).
+#include "apps_support.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/topology.hpp>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace gsp;
+using namespace gsp::test;
+
+const std::string kMesh = std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off";
+const std::string kApp = bin("gsp-cvt");
+
+TEST(CvtApp, RemeshRegionsAndStats) {
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.obj", regions = dir / "regions.ply";
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 600 --iterations 15 --hausdorff-samples 5000 -o " +
+                              quote(out.string()) + " --regions " + quote(regions.string()) + " --stats -",
+                          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue stats = parse_json(r.out);
+  const double sites = stats["result"]["sites"].num;
+  EXPECT_GE(sites, 600);
+  EXPECT_LE(sites, 612);
+  EXPECT_LE(stats["result"]["iterations"].num, 15);
+  EXPECT_GT(stats["result"]["energy"].num, 0);
+  EXPECT_EQ(stats["topology"]["output"]["euler_characteristic"].num, -6);
+  EXPECT_TRUE(stats["topology"]["output"]["manifold"].b);
+  EXPECT_GT(stats["quality"]["min_angle"].num, 10);
+  EXPECT_LT(stats["quality"]["hausdorff"]["percent_of_diagonal"].num, 3);
+  EXPECT_GT(stats["timings"]["compute"].num, 0);
+  EXPECT_GT(stats["timings"]["remesh"].num, 0);
+
+  const io::ReadResult mesh = io::read_mesh(out.string());
+  EXPECT_EQ(double(mesh.mesh.num_vertices()), sites);
+  const TopologyReport t = analyze_topology(mesh.mesh, build_connectivity(mesh.mesh));
+  EXPECT_EQ(t.euler_characteristic, -6);
+
+  const io::ReadResult reg = io::read_mesh(regions.string());
+  EXPECT_EQ(reg.mesh.num_vertices(), 4494u);
+  EXPECT_EQ(reg.mesh.num_faces(), 9000u);
+  ASSERT_EQ(reg.attributes.labels.size(), 1u);
+  EXPECT_EQ(reg.attributes.labels[0].first, "label");
+  std::vector<bool> used(std::size_t(sites), false);
+  for (std::int32_t l : reg.attributes.labels[0].second) {
+    ASSERT_GE(l, 0);
+    ASSERT_LT(l, sites);
+    used[std::size_t(l)] = true;
+  }
+  std::size_t count = 0;
+  for (bool u : used) count += u;
+  EXPECT_GT(count, std::size_t(0.8 * sites));   // most regions hold an input vertex
+  EXPECT_EQ(reg.attributes.colors.size(), 4494u);
+}
+
+TEST(CvtApp, EdgeLengthAndGlb) {
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.glb";
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --edge-length 5% --iterations 3 -q -o " + quote(out.string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  const io::ReadResult mesh = io::read_mesh(out.string());
+  EXPECT_GT(mesh.mesh.num_faces(), 100u);
+}
+
+TEST(CvtApp, UsageErrorsExit2) {
+  ScratchDir dir("cvt");
+  const std::string o = " -o " + quote((dir / "r.obj").string());
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + o, dir).exit_code, 2);   // neither count nor length
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --edge-length 1" + o, dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --edge-length abc" + o, dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 -o " + quote((dir / "r.xyz").string()), dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --regions r.txt" + o, dir).exit_code, 2);
+  EXPECT_FALSE(fs::exists(dir / "r.obj"));
+}
+
+TEST(CvtApp, BadInputExits1) {
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.obj";
+  RunResult r = run(kApp + " " + quote((dir / "missing.off").string()) + " --vertices 10 -o " + quote(out.string()), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  write_file(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
+  r = run(kApp + " " + quote((dir / "broken.off").string()) + " --vertices 10 -o " + quote(out.string()), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  // More sites than the (split) mesh has vertices: one line naming the input.
+  write_file(dir / "tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  r = run(kApp + " " + quote((dir / "tri.off").string()) + " --vertices 100000 -o " + quote(out.string()), dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_NE(r.err.find("tri.off"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace

@@ -1,0 +1,109 @@
+// gsp::cvt quality figures and closest points: closed forms on small meshes, the Embree index
+// against the library's linear scan, Hausdorff distances of shifted planes.
+#include "cvt_meshes.hpp"
+#include "test_data.hpp"
+
+#include <gsp/closest_point.hpp>
+#include <gsp/cvt/closest_point_index.hpp>
+#include <gsp/cvt/quality.hpp>
+#include <gsp/errors.hpp>
+#include <gsp/io/mesh_io.hpp>
+#include <gsp/sampling/random.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace gsp;
+
+TEST(CvtQuality, EquilateralAndRightTriangles) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, std::sqrt(3.0) / 2, 0}};
+  m.triangles = {{0, 1, 2}};
+  cvt::MeshQuality q = cvt::measure_mesh_quality(m);
+  EXPECT_NEAR(q.min_angle, 60.0, 1e-9);
+  EXPECT_NEAR(q.max_angle, 60.0, 1e-9);
+  EXPECT_NEAR(q.mean_aspect_ratio, 1.0, 1e-12);
+  EXPECT_EQ(q.below_30, 0.0);
+  EXPECT_EQ(q.vertices, 3u);
+  ASSERT_EQ(q.valence_histogram.size(), 3u);
+  EXPECT_EQ(q.valence_histogram[2], 3u);
+
+  // Right isosceles: 45/45/90; AR = sqrt2 * (2 + sqrt2) / (4 sqrt3 * 1/2).
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  q = cvt::measure_mesh_quality(m);
+  EXPECT_NEAR(q.min_angle, 45.0, 1e-9);
+  EXPECT_NEAR(q.max_angle, 90.0, 1e-9);
+  EXPECT_NEAR(q.mean_aspect_ratio, std::sqrt(2.0) * (2 + std::sqrt(2.0)) / (2 * std::sqrt(3.0)), 1e-12);
+
+  // A 1 x 10 sliver: 2 of its 3 angles are below 30 degrees; plus one degenerate triangle.
+  m.positions = {{0, 0, 0}, {10, 0, 0}, {5, 1, 0}, {20, 0, 0}};
+  m.triangles = {{0, 1, 2}, {0, 1, 3}};
+  q = cvt::measure_mesh_quality(m);
+  EXPECT_EQ(q.degenerate, 1u);
+  EXPECT_NEAR(q.below_30, 2.0 / 3.0, 1e-12);
+  EXPECT_NEAR(q.min_angle, std::atan(0.2) * 180 / M_PI, 1e-9);
+}
+
+TEST(CvtQuality, GridValences) {
+  // Interior vertex (i, j) of the alternating 4 x 4 grid: valence 8 when i + j is odd (all
+  // four diagonals end there; 4 such vertices), else 4. Valences sum to twice the edge count
+  // (20 + 20 axis edges, 16 diagonals).
+  const TriangleMesh m = test::square_grid(4);
+  const cvt::MeshQuality q = cvt::measure_mesh_quality(m);
+  EXPECT_EQ(q.vertices, 25u);
+  ASSERT_EQ(q.valence_histogram.size(), 9u);
+  EXPECT_EQ(q.valence_histogram[8], 4u);
+  std::size_t sum = 0, count = 0;
+  for (std::size_t k = 0; k < q.valence_histogram.size(); ++k) sum += k * q.valence_histogram[k], count += q.valence_histogram[k];
+  EXPECT_EQ(sum, 2u * 56u);
+  EXPECT_EQ(count, 25u);
+  EXPECT_NEAR(q.mean_edge_length, (40 * 0.25 + 16 * 0.25 * std::sqrt(2.0)) / 56, 1e-12);
+}
+
+TEST(CvtClosestPoint, MatchesLinearScan) {
+  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const cvt::ClosestPointIndex index(m);
+  sampling::Random random(7);
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : m.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  for (int i = 0; i < 300; ++i) {
+    // Points in a box 20% larger than the mesh's: inside, outside and far away.
+    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
+                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const SurfacePoint a = index.closest(p), b = closest_surface_point(m, p);
+    ASSERT_NE(a.face, kInvalidIndex);
+    EXPECT_NEAR(a.distance, b.distance, 1e-9 * (1 + b.distance));
+    EXPECT_NEAR(distance(a.position, p), a.distance, 1e-9 * (1 + a.distance));
+  }
+  TriangleMesh none;
+  none.positions = {{0, 0, 0}, {1, 0, 0}};
+  none.triangles = {{0, 0, 1}};
+  EXPECT_THROW(cvt::ClosestPointIndex{none}, InvalidInput);
+}
+
+TEST(CvtHausdorff, ShiftedSquares) {
+  const TriangleMesh a = test::square_grid(6);
+  TriangleMesh b = test::square_grid(3);
+  for (Vec3& p : b.positions) p.z = 0.05;
+  cvt::HausdorffOptions o;
+  o.samples = 2000;
+  cvt::HausdorffDistance h = cvt::hausdorff_distance(a, b, o);
+  EXPECT_NEAR(h.a_to_b, 0.05, 1e-12);
+  EXPECT_NEAR(h.b_to_a, 0.05, 1e-12);
+  EXPECT_NEAR(h.mean, 0.05, 1e-12);
+  EXPECT_NEAR(h.relative, 0.05 / std::sqrt(2.0), 1e-12);
+  // Shifted sideways by 0.1 in x: points of the overhanging strip are 0.1 from the other square.
+  for (Vec3& p : b.positions) p = {p.x + 0.1, p.y, 0.0};
+  h = cvt::hausdorff_distance(a, b, o);
+  EXPECT_NEAR(h.a_to_b, 0.1, 1e-12);   // vertices x = 0 are sampled exactly
+  EXPECT_NEAR(h.b_to_a, 0.1, 1e-12);
+  EXPECT_LT(h.mean, 0.1 * 0.1);        // only a 10% strip is off
+}
+
+}  // namespace
