@@ -1,6 +1,7 @@
 gsp_test(geodesic_exactness_test SOURCES geodesic_exactness_test.cpp DEPS gsp::core)
 gsp_test(geodesic_dijkstra_test SOURCES geodesic_dijkstra_test.cpp DEPS gsp::core)
 gsp_test(geodesic_batch_test SOURCES geodesic_batch_test.cpp DEPS gsp::core)
+gsp_test(geodesic_local_test SOURCES geodesic_local_test.cpp DEPS gsp::core gsp::io)
 gsp_test(geodesic_heuristic_test SOURCES geodesic_heuristic_test.cpp DEPS gsp::core)
 gsp_test(geodesic_invariants_test SOURCES geodesic_invariants_test.cpp DEPS gsp::core gsp::io)
 gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gsp::io)

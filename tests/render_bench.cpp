@@ -15,34 +15,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <unordered_map>
 
 namespace {
 
 using namespace gsp;
-
-// Midpoint subdivision: every triangle into four, new vertices at edge midpoints (not moved).
-TriangleMesh split4(const TriangleMesh& m) {
-  TriangleMesh out;
-  out.positions = m.positions;
-  std::unordered_map<std::uint64_t, Index> mid;
-  mid.reserve(m.triangles.size() * 2);
-  auto midpoint = [&](Index a, Index b) {
-    const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-    auto [it, fresh] = mid.emplace(key, Index(out.positions.size()));
-    if (fresh) out.positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
-    return it->second;
-  };
-  out.triangles.reserve(4 * m.triangles.size());
-  for (const Triangle& t : m.triangles) {
-    const Index ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-    out.triangles.push_back({t[0], ab, ca});
-    out.triangles.push_back({t[1], bc, ab});
-    out.triangles.push_back({t[2], ca, bc});
-    out.triangles.push_back({ab, bc, ca});
-  }
-  return out;
-}
 
 // CPU seconds of the whole process (all threads, Embree's included): on a busy shared
 // machine wall time depends on the neighbours, CPU time much less.
@@ -57,7 +33,7 @@ const render::Scene& big_scene() {
     render::Scene s;
     const std::string bunny = test::shared_mesh("stanford_bunny.obj");
     if (std::filesystem::exists(bunny)) {
-      s.mesh = split4(split4(io::read_mesh(bunny).mesh));
+      s.mesh = test::split4(test::split4(io::read_mesh(bunny).mesh));
     } else {
       s.mesh = test::icosphere(8);
     }

@@ -1,8 +1,7 @@
-#include "intrinsic_geometry.hpp"
-#include "goal_directed.hpp"
-#include "propagation.hpp"
-#include "virtual_source.hpp"
 #include "intrinsic_delaunay.hpp"
+#include "query_steps.hpp"
+#include "solver_impl.hpp"
+#include "virtual_source.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
@@ -17,91 +16,6 @@
 
 namespace gsp {
 
-using detail::FaceRecord;
-using detail::QueueEntry;
-
-// One triangulation the propagation can run on: the input's faces, or their intrinsic
-// Delaunay flip (same vertices, same surface, better-shaped triangles).
-struct Triangulation {
-  std::vector<Triangle> triangles;
-  std::vector<double> length;             // per halfedge, model units
-  std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
-  std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
-
-  mutable std::once_flag float_once, double_once;
-  mutable std::vector<FaceRecord<float>> records_float;
-  mutable std::vector<FaceRecord<double>> records_double;
-
-  // The per-face records every query starts from (lengths, flat corners, nothing reached),
-  // built on first use per precision.
-  template <class Real>
-  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& flat) const {
-    auto build = [&] {
-      const Real inf = std::numeric_limits<Real>::infinity();
-      std::vector<FaceRecord<Real>> r(triangles.size());
-      for (std::size_t f = 0; f < triangles.size(); ++f) {
-        Index tag = detail::kNoSource;
-        for (Index i = 0; i < 3; ++i)
-          if (flat[triangles[f][i]]) tag |= detail::kFlatCorner0 << i;
-        r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
-                                 Real(scale * length[3 * f + 2])}, tag};
-      }
-      return r;
-    };
-    if constexpr (std::is_same_v<Real, float>) {
-      std::call_once(float_once, [&] { records_float = build(); });
-      return records_float;
-    } else {
-      std::call_once(double_once, [&] { records_double = build(); });
-      return records_double;
-    }
-  }
-
-  void set_direction_bits(const std::vector<Index>& plain_ring) {
-    auto dir = [&](Index h) {
-      return triangles[face_of(h)][corner_of(h)] < triangles[face_of(h)][corner_of(next_halfedge(h))];
-    };
-    ring.resize(plain_ring.size());
-    for (Index h = 0; h < Index(plain_ring.size()); ++h) {
-      const Index g = plain_ring[h];
-      ring[h] = g == h ? h : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0));
-    }
-  }
-
-  void build_corners(std::size_t num_vertices) {
-    corner_begin.assign(num_vertices + 1, 0);
-    for (const Triangle& t : triangles)
-      for (Index v : t) ++corner_begin[v + 1];
-    for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
-    corners.resize(3 * triangles.size());
-    std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
-    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles[face_of(c)][corner_of(c)]]++] = c;
-  }
-};
-
-struct GeodesicSolver::Impl {
-  Layout layout;
-  TriangleMesh mesh;               // reordered by the layout
-  Triangulation input;             // the (reordered) input faces
-  std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
-  std::size_t flips = 0;
-  std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
-  // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
-  // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
-  std::vector<Index> bridge_vertices;
-  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
-  double mean_edge = 1;
-  bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
-  VisibilityHeuristic heuristic;
-  SolverTimings timings;
-
-  void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
-  void find_bridge_vertices();
-  void build_delaunay();
-  template <class Real>
-  GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
-                     const GeodesicOptions& options) const;
-};
 
 void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vector<double>& edge_lengths) {
   const std::size_t nh = conn.num_halfedges();
@@ -265,47 +179,11 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
   return impl_->run<double>(tri, sources, options);
 }
 
-namespace {
-
-// Seeds face f with a source at barycentric point b of the face (canonical coordinates are
-// exact for a point of the face itself); `offset` in normalised units.
-template <class Real>
-bool seed_face(const std::vector<double>& length, Index f, const double b[3], double scale, double offset,
-               Index source, FaceRecord<Real>* faces) {
-  double p[3][2];
-  detail::canonical_corners(length, f, scale, p);
-  const double sx = b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0];
-  const double sy = b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1];
-  const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
-  const Real dT = Real(offset + std::hypot(gx - sx, gy - sy));
-  FaceRecord<Real>& r = faces[f];
-  if (!(dT < r.dT)) return false;
-  r.sx = Real(sx), r.sy = Real(sy), r.sigma = Real(offset), r.dT = dT;
-  r.tag = (r.tag & ~detail::kSourceMask) | source;
-  return true;
-}
-
-const double kCornerWeights[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-
-}  // namespace
-
-// Distance of corner c's vertex through its face's virtual source (normalised units).
-template <class Real>
-Real corner_distance(const FaceRecord<Real>& r, Index corner) {
-  Real x = 0, y = 0;
-  if (corner == 1) x = r.len[0];
-  if (corner == 2) detail::canonical_corner2(r.len, x, y);
-  return r.sigma + std::sqrt((r.sx - x) * (r.sx - x) + (r.sy - y) * (r.sy - y));
-}
-
 template <class Real>
 GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::vector<Source>& sources,
                                          const GeodesicOptions& options) const {
-  const std::vector<double>& length = tri.length;
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
-  const Real inf = std::numeric_limits<Real>::infinity();
-  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^29 - 1)");
   std::vector<FaceRecord<Real>> state = tri.records<Real>(scale, flat);   // this query's copy
 
   GeodesicResult result;
@@ -320,112 +198,16 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
                  options.goal_directed);
   }
 
-  // Exact vertex values for vertex sources (a vertex in no usable face still gets its offset).
-  std::vector<double> source_vertex_value(nv, std::numeric_limits<double>::infinity());
-  std::vector<Index> source_vertex_label(nv, kInvalidIndex);
-
-  for (std::size_t s = 0; s < sources.size(); ++s) {
-    const Source& src = sources[s];
-    const Index label = static_cast<Index>(s);
-    if (!std::isfinite(src.offset) || src.offset < 0)
-      throw InvalidInput("source " + std::to_string(s) + ": offset must be finite and >= 0");
-    if (src.kind == Source::Kind::vertex) {
-      if (src.element >= nv)
-        throw InvalidInput("source vertex " + std::to_string(src.element) + " does not exist (" +
-                           std::to_string(nv) + " vertices)");
-      const Index v = layout.vertex_rank[src.element];
-      if (src.offset < source_vertex_value[v]) {
-        source_vertex_value[v] = src.offset;
-        source_vertex_label[v] = label;
-        if (goal) goal->vertex_value(v, Real(src.offset * scale));
-      }
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const Index f = face_of(c);
-        if (skipped_face[f]) continue;
-        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state.data()))
-          queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
-      }
-    } else {
-      if (src.element >= nf)
-        throw InvalidInput("source face " + std::to_string(src.element) + " does not exist (" +
-                           std::to_string(nf) + " faces)");
-      const auto& b = src.barycentric;
-      const double sum = b[0] + b[1] + b[2];
-      if (!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || std::abs(sum - 1) > 1e-6)
-        throw InvalidInput("source " + std::to_string(s) +
-                           ": barycentric coordinates must be >= 0 and sum to 1");
-      const Index f = layout.face_rank[src.element];
-      if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
-      const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
-      if (seed_face(length, f, w, scale, src.offset * scale, label, state.data()))
-        for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
-    }
-  }
-  // A face seeded twice (two sources) left an entry behind for its first seed.
+  std::vector<VertexSeed> vertex_seeds;
+  seed<Real>(tri, sources, state.data(), queue, vertex_seeds, goal ? &*goal : nullptr, nullptr);
   result.stats.enqueued = queue.size();
-
-  const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
-  detail::UpdateStep<Real> step(state.data(), tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit,
-                                result.stats);
-  const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
-  auto propagate = [&] {
-    using detail::Postpone;
-    if (goal) return detail::run_targeted(step, queue, *goal, result.stats);
-    switch (options.strategy) {
-      case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, result.stats); break;
-      case Strategy::static_postpone:
-        detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, result.stats);
-        break;
-      case Strategy::dynamic_postpone:
-        detail::run_postpone(step, queue, Postpone::dynamic, f, f0, f1, result.stats);
-        break;
-      case Strategy::hybrid_postpone:
-        detail::run_postpone(step, queue, Postpone::hybrid, f, f0, f1, result.stats);
-        break;
-      case Strategy::bfs:
-        detail::run_postpone(step, queue, Postpone::none, f, f0, f1, result.stats);
-        break;
-      case Strategy::priority_queue: detail::run_priority_queue(step, queue, result.stats); break;
-    }
-  };
-  propagate();
-
-  // Bridges: a vertex joining fans that share no edge passes the front on as a virtual source
-  // at the vertex. Each round only lowers distances, so this ends; manifold meshes skip it.
-  for (bool changed = !bridge_vertices.empty(); changed;) {
-    changed = false;
-    for (Index v : bridge_vertices) {
-      Real best = inf;
-      Index label = kInvalidIndex;
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const FaceRecord<Real>& st = state[face_of(c)];
-        if (!st.reached()) continue;
-        const Real d = corner_distance(st, corner_of(c));
-        if (d < best) best = d, label = st.source();
-      }
-      if (!(best <= limit)) continue;
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const Index fc = face_of(c);
-        if (skipped_face[fc]) continue;
-        const FaceRecord<Real> before = state[fc];
-        if (seed_face(length, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state.data()) &&
-            state[fc].dT + state[fc].dT * std::numeric_limits<Real>::epsilon() * 4 < before.dT) {
-          queue.push_back({next_halfedge(c), state[fc].dT});
-          changed = true;
-        } else {
-          state[fc] = before;
-        }
-      }
-    }
-    if (changed) propagate();
-  }
+  propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr);
 
   // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces.
-  std::vector<double> vdist(source_vertex_value);
-  std::vector<Index> vlabel(source_vertex_label);
+  std::vector<double> vdist(nv, std::numeric_limits<double>::infinity());
+  std::vector<Index> vlabel(nv, kInvalidIndex);
+  for (const VertexSeed& vs : vertex_seeds)
+    if (vs.value < vdist[vs.vertex]) vdist[vs.vertex] = vs.value, vlabel[vs.vertex] = vs.label;
   for (std::size_t fi = 0; fi < nf; ++fi) {
     const FaceRecord<Real>& st = state[fi];
     if (!st.reached()) continue;

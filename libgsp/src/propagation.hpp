@@ -39,6 +39,10 @@ class UpdateStep {
              PropagationStats& stats)
       : faces_(faces), ring_(ring), probe_(probe), limit_(expand_limit), stats_(stats) {}
 
+  // Bounded queries collect the faces they reach for the first time (to list and reset them
+  // without scanning the mesh); one predictable branch per accepted update.
+  void collect_reached(std::vector<Index>* faces) { reached_ = faces; }
+
   bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
   // Propagates the virtual source of the entry's face over its halfedge into every other face
@@ -123,11 +127,14 @@ class UpdateStep {
       // between faces forever.
       if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) continue;
       ++stats_.face_updates;
+      if (reached_ && t.dT == std::numeric_limits<Real>::infinity()) reached_->push_back(face_of(g));
       canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
       t.sigma = new_sigma;
       t.dT = new_dT;
       t.tag = (t.tag & ~kSourceMask) | source;
-      if (!(new_dT <= limit_)) continue;   // max-distance: stored, not expanded
+      // Max-distance: a face none of whose points can be within the limit is stored, not
+      // expanded (its centroid is farther than the limit by more than its own radius).
+      if (!(new_dT <= limit_) && !(new_dT - centroid_radius(t.len) <= limit_)) continue;
       push(QueueEntry<Real>{next_halfedge(g), new_dT});
       push(QueueEntry<Real>{prev_halfedge(g), new_dT});
     }
@@ -135,11 +142,18 @@ class UpdateStep {
   }
 
  private:
+  // The largest distance from the centroid to a corner: two thirds of the longest median.
+  static Real centroid_radius(const Real (&len)[3]) {
+    const Real a2 = len[0] * len[0], b2 = len[1] * len[1], c2 = len[2] * len[2];
+    const Real m = std::max({2 * (b2 + c2) - a2, 2 * (a2 + c2) - b2, 2 * (a2 + b2) - c2});
+    return std::sqrt(std::max(m, Real(0))) / 3;
+  }
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
   FaceRecord<Real>* faces_;
   const Index* ring_;
   ProbeTable<Real> probe_;
   Real limit_;
+  std::vector<Index>* reached_ = nullptr;
   PropagationStats& stats_;
 };
 

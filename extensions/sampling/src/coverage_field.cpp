@@ -1,26 +1,37 @@
 #include "coverage_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gsp::sampling::detail {
 
-CoverageField::CoverageField(std::size_t num_faces, const std::vector<bool>& referenced, double radius)
+CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& referenced, double radius)
     : vertex_(referenced.size(), std::numeric_limits<double>::infinity()),
-      head_(num_faces, -1),
-      sample_head_(num_faces, -1),
+      centroid_radius_(mesh.num_faces(), 0.0),
+      head_(mesh.num_faces(), -1),
+      sample_head_(mesh.num_faces(), -1),
       referenced_(referenced),
       radius_(radius) {
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 c = (1.0 / 3) * (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]);
+    for (Index v : t) centroid_radius_[f] = std::max(centroid_radius_[f], distance(c, mesh.positions[v]));
+  }
   for (bool r : referenced) referenced_count_ += r;
   uncovered_ = referenced_count_;
 }
 
-bool CoverageField::clear_of_samples(const GeodesicResult& run, const TriangleMesh& mesh, double radius,
-                                     double keep_face_distance) const {
-  const std::size_t nf = sample_head_.size();
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (sample_head_[f] < 0 || !(run.face_distance[f] <= keep_face_distance)) continue;
-    for (std::int32_t e = sample_head_[f]; e >= 0; e = samples_[e].next)
-      if (run.distance_at(mesh, Index(f), samples_[e].barycentric) < radius) return false;
+bool CoverageField::clear_of_samples(const LocalField& run, const TriangleMesh& mesh) const {
+  for (std::size_t k = 0; k < run.faces.size(); ++k) {
+    const Index f = run.faces[k];
+    if (sample_head_[f] < 0 || !near(run, k)) continue;
+    const Triangle& t = mesh.triangles[f];
+    const VirtualSource& vs = run.face_sources[k];
+    for (std::int32_t e = sample_head_[f]; e >= 0; e = samples_[e].next) {
+      const auto& b = samples_[e].barycentric;
+      const Vec3 p = b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] + b[2] * mesh.positions[t[2]];
+      if (vs.sigma + distance(p, vs.position) < radius_) return false;
+    }
   }
   return true;
 }
@@ -30,21 +41,19 @@ void CoverageField::add_sample(Index face, const std::array<double, 3>& barycent
   sample_head_[face] = std::int32_t(samples_.size() - 1);
 }
 
-void CoverageField::merge(const GeodesicResult& run, double keep_face_distance) {
-  const std::size_t nv = vertex_.size();
-  for (std::size_t v = 0; v < nv; ++v) {
-    const double d = run.vertex_distance[v];
+void CoverageField::merge(const LocalField& run) {
+  for (std::size_t k = 0; k < run.vertices.size(); ++k) {
+    const Index v = run.vertices[k];
+    const double d = run.vertex_distance[k];
     if (!(d < vertex_[v])) continue;
     if (referenced_[v] && vertex_[v] >= radius_ && d < radius_) --uncovered_;
     vertex_[v] = d;
   }
-  const std::size_t nf = head_.size();
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (!(run.face_distance[f] <= keep_face_distance)) continue;
-    const VirtualSource& vs = run.face_sources[f];
-    if (!vs.reached()) continue;
-    pool_.push_back({vs.position, vs.sigma, head_[f]});
-    head_[f] = std::int32_t(pool_.size() - 1);
+  for (std::size_t k = 0; k < run.faces.size(); ++k) {
+    if (!near(run, k)) continue;
+    const VirtualSource& vs = run.face_sources[k];
+    pool_.push_back({vs.position, vs.sigma, head_[run.faces[k]]});
+    head_[run.faces[k]] = std::int32_t(pool_.size() - 1);
   }
 }
 

@@ -17,23 +17,20 @@ namespace gsp::sampling::detail {
 class CoverageField {
  public:
   // `referenced` marks the vertices used by a face; only those count as uncovered.
-  CoverageField(std::size_t num_faces, const std::vector<bool>& referenced, double radius);
+  CoverageField(const TriangleMesh& mesh, const std::vector<bool>& referenced, double radius);
 
-  // True when the run (from a candidate) reaches no earlier sample closer than `radius`
-  // within the faces whose centroid is within `keep_face_distance`. GSP's distance from a
+  // True when the run (from a candidate) reaches no earlier sample closer than `radius`. GSP's distance from a
   // to b and from b to a can differ by several percent on coarse meshes (one virtual source
   // per face), so the candidate test checks both directions: the field at the candidate
   // (earlier runs) before its run, this after it.
-  bool clear_of_samples(const GeodesicResult& run, const TriangleMesh& mesh, double radius,
-                        double keep_face_distance) const;
+  bool clear_of_samples(const LocalField& run, const TriangleMesh& mesh) const;
   // Registers a sample at (face, barycentric) for clear_of_samples.
   void add_sample(Index face, const std::array<double, 3>& barycentric);
 
-  // Merges one run: vertex minimum everywhere it reached; face virtual sources where the
-  // face centroid is within `keep_face_distance` (a point within r of the source lies in
-  // a face whose centroid is within r + the longest edge). Cost: one pass over the
-  // full-size result arrays (compute() returns them full size).
-  void merge(const GeodesicResult& run, double keep_face_distance);
+  // Merges one run: vertex minimum everywhere it reached; face virtual sources of the faces
+  // that can hold a point within r (centroid distance minus the face's centroid radius).
+  // Cost: the run's neighbourhood (compute_local lists only what it reached).
+  void merge(const LocalField& run);
 
   // Distance from the point p of face f to the nearest sample so far (+inf if none near).
   double distance_at(Index face, Vec3 p) const {
@@ -55,7 +52,12 @@ class CoverageField {
     double sigma;
     std::int32_t next;
   };
+  // A face can hold a point within r of the run's source.
+  bool near(const LocalField& run, std::size_t k) const {
+    return run.face_distance[k] - centroid_radius_[run.faces[k]] < radius_;
+  }
   std::vector<double> vertex_;
+  std::vector<double> centroid_radius_;   // per face: largest centroid-to-corner distance
   std::vector<std::int32_t> head_;
   std::vector<Entry> pool_;
   struct SampleEntry {

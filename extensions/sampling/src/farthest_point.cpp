@@ -1,12 +1,16 @@
 // Farthest-point sampling on the vertices: each new sample is the vertex farthest from all
 // earlier ones, and its propagation is bounded by that distance (only vertices closer to the
-// new sample than to every earlier one change, and those are within it).
+// new sample than to every earlier one change, and those are within it). Bounded runs
+// (compute_local) and a max-heap of coverage values with lazy deletion keep each sample's
+// cost to its neighbourhood.
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <queue>
+#include <utility>
 
 namespace gsp::sampling {
 
@@ -27,11 +31,16 @@ SamplingResult Sampler::farthest(const SamplingOptions& options) const {
   double next_distance = inf;
   result.radius = inf;
 
+  // (coverage, -vertex): the largest coverage first, the smallest index among equals.
+  std::priority_queue<std::pair<double, std::int64_t>> heap;
+  std::size_t unreached = available;   // referenced vertices no run has reached yet
+  std::size_t scan = 0;                // unreached ones are found by a forward scan
+  LocalWorkspace workspace = solver_.make_workspace();
   while (result.samples.size() < want) {
     if (options.radius > 0 && next_distance < options.radius) break;
     GeodesicOptions go;
     go.max_distance = next_distance;
-    const GeodesicResult run = solver_.compute({Source::at_vertex(next)}, go);
+    const LocalField run = solver_.compute_local({Source::at_vertex(next)}, go, workspace);
     ++result.stats.propagations;
     result.stats.update_steps += run.stats.update_steps;
     result.stats.faces_reached += run.stats.faces_reached;
@@ -42,15 +51,24 @@ SamplingResult Sampler::farthest(const SamplingOptions& options) const {
     result.samples.push_back(make_sample(mesh_, f, b));
     result.radius = next_distance;
 
-    // Merge and find the next farthest vertex in one pass. A component no sample has reached
-    // yet is infinitely far: it gets the next sample.
+    for (std::size_t k = 0; k < run.vertices.size(); ++k) {
+      const Index v = run.vertices[k];
+      double& c = result.coverage[v];
+      if (!referenced_[v] || !(run.vertex_distance[k] < c)) continue;
+      if (c == inf) --unreached;
+      c = run.vertex_distance[k];
+      heap.push({c, -std::int64_t(v)});
+    }
+    // The next sample: a vertex of a component no sample has reached yet (infinitely far),
+    // else the farthest one.
     next = kInvalidIndex;
     next_distance = -1;
-    for (std::size_t v = 0; v < result.coverage.size(); ++v) {
-      if (!referenced_[v]) continue;
-      double& c = result.coverage[v];
-      if (run.vertex_distance[v] < c) c = run.vertex_distance[v];
-      if (c > next_distance) next_distance = c, next = Index(v);
+    if (unreached > 0) {
+      while (!(referenced_[scan] && result.coverage[scan] == inf)) ++scan;
+      next = Index(scan), next_distance = inf;
+    } else {
+      while (!heap.empty() && heap.top().first != result.coverage[Index(-heap.top().second)]) heap.pop();
+      if (!heap.empty()) next = Index(-heap.top().second), next_distance = heap.top().first;
     }
     if (next == kInvalidIndex || next_distance <= 0) break;   // every vertex is a sample
     if (options.progress) {

@@ -49,7 +49,7 @@ SamplingResult Sampler::sample(const SamplingOptions& options) const {
 
 namespace {
 
-void count_run(SamplingStats& stats, const GeodesicResult& run) {
+void count_run(SamplingStats& stats, const LocalField& run) {
   ++stats.propagations;
   stats.update_steps += run.stats.update_steps;
   stats.faces_reached += run.stats.faces_reached;
@@ -60,24 +60,22 @@ void count_run(SamplingStats& stats, const GeodesicResult& run) {
 SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) const {
   SamplingResult result;
   result.radius = radius;
-  detail::CoverageField field(mesh_.num_faces(), referenced_, radius);
-  // Any point within r of a sample lies in a face whose centroid is within r + the longest
-  // edge, and every face on the geodesic to it too: expanding that far makes the stored
-  // virtual sources exact for all points that matter (max_distance = r alone could leave a
-  // face that holds points closer than r unreached when edges are long).
-  const double reach = radius + longest_edge_;
+  detail::CoverageField field(mesh_, referenced_, radius);
+  // Bounded at r: the propagation still reaches every face that can hold a point within r
+  // (GeodesicOptions::max_distance), so the stored virtual sources cover all that matters.
   GeodesicOptions go;
-  go.max_distance = reach;
+  go.max_distance = radius;
   go.want_face_sources = true;
 
   Random random(options.seed);
+  LocalWorkspace workspace = solver_.make_workspace();
   // Runs the candidate's propagation; keeps it unless it reaches an earlier sample closer
   // than r (the other direction of the test, see CoverageField::clear_of_samples).
   auto accept = [&](const Sample& s) {
-    const GeodesicResult run = solver_.compute({Source::in_face(s.face, s.barycentric)}, go);
+    const LocalField run = solver_.compute_local({Source::in_face(s.face, s.barycentric)}, go, workspace);
     count_run(result.stats, run);
-    if (!field.clear_of_samples(run, mesh_, radius, reach)) return false;
-    field.merge(run, reach);
+    if (!field.clear_of_samples(run, mesh_)) return false;
+    field.merge(run);
     field.add_sample(s.face, s.barycentric);
     result.samples.push_back(s);
     if (options.progress && field.referenced_count())

@@ -54,8 +54,10 @@ struct GeodesicOptions {
   double f = 1.0;        // speed limiter / static / dynamic postpone step, in mean edge lengths
   double f0 = 1.0;       // hybrid postpone
   double f1 = 0.1;       // hybrid postpone
-  // Stop expanding faces whose distance exceeds this (model units): the cost then follows the
-  // neighbourhood, not the mesh. Vertices farther than this are reported as +inf.
+  // Stop expanding faces none of whose points can be within this distance (model units: the
+  // centroid's distance minus the centroid's largest distance to a corner exceeds it): the
+  // cost then follows the neighbourhood, not the mesh, and every face holding a point within
+  // max_distance is reached. Vertices farther than this are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
   bool want_face_sources = false;   // fill GeodesicResult::face_sources
   // Targets (input vertex indices): when given, the propagation runs in a heap (the
@@ -104,6 +106,36 @@ struct GeodesicResult {
   double distance_at(const TriangleMesh& mesh, Index face, std::array<double, 3> bary) const;
 };
 
+// The part of a field a bounded query (GeodesicSolver::compute_local) reached: only the
+// vertices within max_distance and the faces the front touched, in input indices. Its size
+// follows the neighbourhood, not the mesh.
+struct LocalField {
+  std::vector<Index> vertices;            // input vertices with distance <= max_distance
+  std::vector<double> vertex_distance;    // parallel to `vertices`
+  std::vector<Index> vertex_source;       // parallel to `vertices`: the nearest source
+  std::vector<Index> faces;               // input faces the front reached
+  std::vector<double> face_distance;      // parallel to `faces`: distance at the centroid
+  std::vector<Index> face_source;         // parallel to `faces`
+  std::vector<VirtualSource> face_sources;   // parallel to `faces`, when want_face_sources
+  PropagationStats stats;
+};
+
+// Scratch state of bounded queries: the per-face records and per-vertex minima, put back
+// only where a query touched them, so a query costs its neighbourhood. Made by
+// GeodesicSolver::make_workspace(), used by one thread at a time, with that solver only.
+class LocalWorkspace {
+ public:
+  LocalWorkspace();
+  ~LocalWorkspace();
+  LocalWorkspace(LocalWorkspace&&) noexcept;
+  LocalWorkspace& operator=(LocalWorkspace&&) noexcept;
+  struct State;
+
+ private:
+  friend class GeodesicSolver;
+  std::unique_ptr<State> state_;
+};
+
 // Seconds spent preparing a solver (library code measures, apps report).
 struct SolverTimings {
   double layout = 0;   // compute_cache_layout + reordering
@@ -140,6 +172,14 @@ class GeodesicSolver {
 
   // Throws InvalidInput for a source that names a missing vertex/face or bad barycentrics.
   GeodesicResult compute(const std::vector<Source>& sources, const GeodesicOptions& options = {}) const;
+
+  // A bounded query: the same propagation as compute() (on the input faces, whatever the
+  // intrinsic Delaunay option says), but the result lists only what it reached and the cost
+  // is that of the neighbourhood, not of the mesh (for sampling, local Voronoi updates...).
+  // Meant for a finite max_distance; targets are not supported (InvalidInput).
+  LocalWorkspace make_workspace() const;
+  LocalField compute_local(const std::vector<Source>& sources, const GeodesicOptions& options,
+                           LocalWorkspace& workspace) const;
 
   const Layout& layout() const;
   const SolverTimings& timings() const;

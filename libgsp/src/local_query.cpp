@@ -1,0 +1,147 @@
+// Bounded queries (GeodesicSolver::compute_local): the propagation of compute() on a state that
+// persists in a workspace and is put back only where the query touched it. The faces touched
+// are the seeded ones and those the update step reached for the first time (it lists them),
+// so nothing scans the whole mesh.
+#include "query_steps.hpp"
+#include "solver_impl.hpp"
+#include "virtual_source.hpp"
+
+#include <gsp/errors.hpp>
+
+namespace gsp {
+
+template <class Real>
+struct LocalBuffers {
+  std::vector<FaceRecord<Real>> state;   // pristine outside the last query's faces
+  std::vector<QueueEntry<Real>> queue;
+};
+
+struct LocalWorkspace::State {
+  const void* owner = nullptr;   // the solver's Impl the buffers were made for
+  LocalBuffers<float> single;
+  LocalBuffers<double> twice;
+  std::vector<double> vdist;     // +inf outside the last query's vertices
+  std::vector<Index> vlabel;
+  std::vector<std::uint8_t> face_mark;
+  std::vector<Index> faces, vertices, seeded;
+  std::vector<VertexSeed> vertex_seeds;
+};
+
+LocalWorkspace::LocalWorkspace() : state_(std::make_unique<State>()) {}
+LocalWorkspace::~LocalWorkspace() = default;
+LocalWorkspace::LocalWorkspace(LocalWorkspace&&) noexcept = default;
+LocalWorkspace& LocalWorkspace::operator=(LocalWorkspace&&) noexcept = default;
+
+LocalWorkspace GeodesicSolver::make_workspace() const {
+  LocalWorkspace w;
+  LocalWorkspace::State& s = *w.state_;
+  s.owner = impl_.get();
+  s.vdist.assign(impl_->mesh.num_vertices(), std::numeric_limits<double>::infinity());
+  s.vlabel.assign(impl_->mesh.num_vertices(), kInvalidIndex);
+  s.face_mark.assign(impl_->mesh.num_faces(), 0);
+  return w;
+}
+
+LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, const GeodesicOptions& options,
+                                         LocalWorkspace& workspace) const {
+  if (!workspace.state_ || workspace.state_->owner != impl_.get())
+    throw InvalidInput("compute_local: the workspace was made by another solver (use make_workspace())");
+  if (!options.targets.empty() || options.goal_directed)
+    throw InvalidInput("compute_local: targets are not supported (use compute())");
+  if (!(options.f > 0) || !(options.f0 > 0) || !(options.f1 > 0))
+    throw InvalidInput("strategy parameters f, f0, f1 must be positive");
+  if (std::isnan(options.max_distance) || options.max_distance < 0)
+    throw InvalidInput("max_distance must be >= 0");
+  if (impl_->custom_lengths && options.want_face_sources)
+    throw InvalidInput("per-face virtual sources are 3D points: not with SolverOptions::edge_lengths");
+  if (options.precision == Precision::single) return impl_->run_local<float>(sources, options, workspace);
+  return impl_->run_local<double>(sources, options, workspace);
+}
+
+template <class Real>
+LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, const GeodesicOptions& options,
+                                           LocalWorkspace& workspace) const {
+  LocalWorkspace::State& ws = *workspace.state_;
+  LocalBuffers<Real>& buf = [&]() -> LocalBuffers<Real>& {
+    if constexpr (std::is_same_v<Real, float>) return ws.single;
+    else return ws.twice;
+  }();
+  const Triangulation& tri = input;
+  const double scale = 1.0 / mean_edge;
+  const std::vector<FaceRecord<Real>>& pristine = tri.records<Real>(scale, flat);
+  if (buf.state.empty()) buf.state = pristine;   // first query of this precision: one full copy
+
+  LocalField result;
+  result.stats.mean_edge_length = mean_edge;
+  ws.seeded.clear();
+  ws.vertex_seeds.clear();
+  buf.queue.clear();
+  // Whatever happens below, the workspace is put back for the next query.
+  struct Restore {
+    LocalWorkspace::State& ws;
+    LocalBuffers<Real>& buf;
+    // Only the source fields change in a query (lengths and flat-corner bits stay): writing
+    // their initial values back needs no read of the pristine records (cold in cache).
+    void reset(Index f) {
+      FaceRecord<Real>& r = buf.state[f];
+      r.sx = r.sy = 0;
+      r.sigma = r.dT = std::numeric_limits<Real>::infinity();
+      r.tag = (r.tag & ~detail::kSourceMask) | detail::kNoSource;
+      ws.face_mark[f] = 0;
+    }
+    ~Restore() {
+      for (Index f : ws.faces) reset(f);
+      for (Index f : ws.seeded) reset(f);
+      for (Index v : ws.vertices) ws.vdist[v] = std::numeric_limits<double>::infinity(), ws.vlabel[v] = kInvalidIndex;
+      ws.faces.clear(), ws.vertices.clear(), ws.seeded.clear();
+    }
+  } restore{ws, buf};
+
+  seed<Real>(tri, sources, buf.state.data(), buf.queue, ws.vertex_seeds, nullptr, &ws.seeded);
+  result.stats.enqueued = buf.queue.size();
+  propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces);
+
+  // The faces reached: those the propagation reached for the first time, and the seeded ones.
+  for (Index f : ws.faces) ws.face_mark[f] = 1;
+  for (Index f : ws.seeded)
+    if (!ws.face_mark[f]) ws.face_mark[f] = 1, ws.faces.push_back(f);
+  auto touch = [&](Index v, double d, Index label) {
+    if (ws.vdist[v] == std::numeric_limits<double>::infinity()) ws.vertices.push_back(v);
+    if (d < ws.vdist[v]) ws.vdist[v] = d, ws.vlabel[v] = label;
+  };
+  for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
+  for (Index f : ws.faces) {
+    const FaceRecord<Real>& st = buf.state[f];
+    const Triangle& t = tri.triangles[f];
+    for (Index i = 0; i < 3; ++i) touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
+  }
+  result.stats.faces_reached = ws.faces.size();
+
+  const double cutoff = options.max_distance;
+  for (Index v : ws.vertices) {
+    if (!(ws.vdist[v] <= cutoff)) continue;
+    result.vertices.push_back(layout.vertex_order[v]);
+    result.vertex_distance.push_back(ws.vdist[v]);
+    result.vertex_source.push_back(ws.vlabel[v]);
+  }
+  result.faces.reserve(ws.faces.size());
+  result.face_distance.reserve(ws.faces.size());
+  result.face_source.reserve(ws.faces.size());
+  if (options.want_face_sources) result.face_sources.reserve(ws.faces.size());
+  for (Index f : ws.faces) {
+    const FaceRecord<Real>& st = buf.state[f];
+    result.faces.push_back(layout.face_order[f]);
+    result.face_distance.push_back(double(st.dT) * mean_edge);
+    result.face_source.push_back(st.source());
+    if (options.want_face_sources) {
+      VirtualSource vs;
+      vs.position = detail::canonical_to_3d(mesh, f, double(st.sx) * mean_edge, double(st.sy) * mean_edge);
+      vs.sigma = double(st.sigma) * mean_edge;
+      vs.source = st.source();
+      result.face_sources.push_back(vs);
+    }
+  }
+  return result;
+}
+
+}  // namespace gsp

@@ -1,0 +1,134 @@
+#pragma once
+// Seeding and propagation, shared by full queries (geodesic_solver.cpp) and bounded ones
+// (local_query.cpp). Templates on the scalar type; included by both.
+#include "solver_impl.hpp"
+
+#include <gsp/errors.hpp>
+
+#include <algorithm>
+#include <string>
+
+namespace gsp {
+
+template <class Real>
+void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Source>& sources, FaceRecord<Real>* state,
+                                std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
+                                detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const {
+  const std::vector<double>& length = tri.length;
+  const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
+  const double scale = 1.0 / mean_edge;
+  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^29 - 1)");
+
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const Source& src = sources[s];
+    const Index label = static_cast<Index>(s);
+    if (!std::isfinite(src.offset) || src.offset < 0)
+      throw InvalidInput("source " + std::to_string(s) + ": offset must be finite and >= 0");
+    if (src.kind == Source::Kind::vertex) {
+      if (src.element >= nv)
+        throw InvalidInput("source vertex " + std::to_string(src.element) + " does not exist (" +
+                           std::to_string(nv) + " vertices)");
+      const Index v = layout.vertex_rank[src.element];
+      // Repeated vertices are resolved where the seeds are applied (the smallest offset, the
+      // first source on ties).
+      vertex_seeds.push_back({v, src.offset, label});
+      if (goal) goal->vertex_value(v, Real(src.offset * scale));
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
+        const Index f = face_of(c);
+        if (skipped_face[f]) continue;
+        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state)) {
+          queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
+          if (seeded) seeded->push_back(f);
+        }
+      }
+    } else {
+      if (src.element >= nf)
+        throw InvalidInput("source face " + std::to_string(src.element) + " does not exist (" +
+                           std::to_string(nf) + " faces)");
+      const auto& b = src.barycentric;
+      const double sum = b[0] + b[1] + b[2];
+      if (!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || std::abs(sum - 1) > 1e-6)
+        throw InvalidInput("source " + std::to_string(s) +
+                           ": barycentric coordinates must be >= 0 and sum to 1");
+      const Index f = layout.face_rank[src.element];
+      if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
+      const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
+      if (seed_face(length, f, w, scale, src.offset * scale, label, state)) {
+        for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
+        if (seeded) seeded->push_back(f);
+      }
+    }
+  }
+}
+
+template <class Real>
+void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
+                                     std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal,
+                                     PropagationStats& stats, std::vector<Index>* seeded,
+                                     std::vector<Index>* reached) const {
+  const std::vector<double>& length = tri.length;
+  const double scale = 1.0 / mean_edge;
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
+  detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
+  step.collect_reached(reached);
+  const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
+  auto propagate = [&] {
+    using detail::Postpone;
+    if (goal) return detail::run_targeted(step, queue, *goal, stats);
+    switch (options.strategy) {
+      case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, stats); break;
+      case Strategy::static_postpone:
+        detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, stats);
+        break;
+      case Strategy::dynamic_postpone:
+        detail::run_postpone(step, queue, Postpone::dynamic, f, f0, f1, stats);
+        break;
+      case Strategy::hybrid_postpone:
+        detail::run_postpone(step, queue, Postpone::hybrid, f, f0, f1, stats);
+        break;
+      case Strategy::bfs:
+        detail::run_postpone(step, queue, Postpone::none, f, f0, f1, stats);
+        break;
+      case Strategy::priority_queue: detail::run_priority_queue(step, queue, stats); break;
+    }
+  };
+  propagate();
+
+  // Bridges: a vertex joining fans that share no edge passes the front on as a virtual source
+  // at the vertex. Each round only lowers distances, so this ends; manifold meshes skip it.
+  for (bool changed = !bridge_vertices.empty(); changed;) {
+    changed = false;
+    for (Index v : bridge_vertices) {
+      Real best = inf;
+      Index label = kInvalidIndex;
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
+        const FaceRecord<Real>& st = state[face_of(c)];
+        if (!st.reached()) continue;
+        const Real d = corner_distance(st, corner_of(c));
+        if (d < best) best = d, label = st.source();
+      }
+      if (!(best <= limit)) continue;
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
+        const Index fc = face_of(c);
+        if (skipped_face[fc]) continue;
+        const FaceRecord<Real> before = state[fc];
+        if (seed_face(length, fc, kCornerWeights[corner_of(c)], scale, double(best), label, state) &&
+            state[fc].dT + state[fc].dT * std::numeric_limits<Real>::epsilon() * 4 < before.dT) {
+          queue.push_back({next_halfedge(c), state[fc].dT});
+          if (seeded) seeded->push_back(fc);
+          changed = true;
+        } else {
+          state[fc] = before;
+        }
+      }
+    }
+    if (changed) propagate();
+  }
+
+}
+
+}  // namespace gsp

@@ -1,0 +1,161 @@
+#pragma once
+// The solver's prepared state (GeodesicSolver::Impl) and the pieces its queries share; internal
+// to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
+// bounded ones, query_steps.hpp holds the seeding and propagation both use.
+#include "goal_directed.hpp"
+#include "intrinsic_geometry.hpp"
+#include "propagation.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/geodesics.hpp>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <type_traits>
+#include <vector>
+
+namespace gsp {
+
+using detail::FaceRecord;
+using detail::QueueEntry;
+
+// A vertex source's exact value at its own vertex (a vertex in no usable face still gets it).
+struct VertexSeed {
+  Index vertex;   // layout order
+  double value;   // model units
+  Index label;
+};
+
+// One triangulation the propagation can run on: the input's faces, or their intrinsic
+// Delaunay flip (same vertices, same surface, better-shaped triangles).
+struct Triangulation {
+  std::vector<Triangle> triangles;
+  std::vector<double> length;             // per halfedge, model units
+  std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
+  std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
+
+  mutable std::once_flag float_once, double_once;
+  mutable std::vector<FaceRecord<float>> records_float;
+  mutable std::vector<FaceRecord<double>> records_double;
+
+  // The per-face records every query starts from (lengths, flat corners, nothing reached),
+  // built on first use per precision.
+  template <class Real>
+  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& flat) const {
+    auto build = [&] {
+      const Real inf = std::numeric_limits<Real>::infinity();
+      std::vector<FaceRecord<Real>> r(triangles.size());
+      for (std::size_t f = 0; f < triangles.size(); ++f) {
+        Index tag = detail::kNoSource;
+        for (Index i = 0; i < 3; ++i)
+          if (flat[triangles[f][i]]) tag |= detail::kFlatCorner0 << i;
+        r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
+                                 Real(scale * length[3 * f + 2])}, tag};
+      }
+      return r;
+    };
+    if constexpr (std::is_same_v<Real, float>) {
+      std::call_once(float_once, [&] { records_float = build(); });
+      return records_float;
+    } else {
+      std::call_once(double_once, [&] { records_double = build(); });
+      return records_double;
+    }
+  }
+
+  void set_direction_bits(const std::vector<Index>& plain_ring) {
+    auto dir = [&](Index h) {
+      return triangles[face_of(h)][corner_of(h)] < triangles[face_of(h)][corner_of(next_halfedge(h))];
+    };
+    ring.resize(plain_ring.size());
+    for (Index h = 0; h < Index(plain_ring.size()); ++h) {
+      const Index g = plain_ring[h];
+      ring[h] = g == h ? h : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0));
+    }
+  }
+
+  void build_corners(std::size_t num_vertices) {
+    corner_begin.assign(num_vertices + 1, 0);
+    for (const Triangle& t : triangles)
+      for (Index v : t) ++corner_begin[v + 1];
+    for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
+    corners.resize(3 * triangles.size());
+    std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
+    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles[face_of(c)][corner_of(c)]]++] = c;
+  }
+};
+
+struct GeodesicSolver::Impl {
+  Layout layout;
+  TriangleMesh mesh;               // reordered by the layout
+  Triangulation input;             // the (reordered) input faces
+  std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
+  std::size_t flips = 0;
+  std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
+  // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
+  // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
+  std::vector<Index> bridge_vertices;
+  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
+  double mean_edge = 1;
+  bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
+  VisibilityHeuristic heuristic;
+  SolverTimings timings;
+
+  void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
+  void find_bridge_vertices();
+  void build_delaunay();
+  template <class Real>
+  GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
+                     const GeodesicOptions& options) const;
+  template <class Real>
+  LocalField run_local(const std::vector<Source>& sources, const GeodesicOptions& options,
+                       LocalWorkspace& workspace) const;
+
+  // The steps every query shares (query_steps.hpp). seed(): validates the sources and seeds
+  // their faces; vertex sources also give their vertex's exact value (vertex_seeds). Faces
+  // seeded are appended to `seeded` when given. propagate(): the chosen strategy, then the
+  // bridge vertices' rounds; faces reached for the first time are appended to `reached`
+  // when given.
+  template <class Real>
+  void seed(const Triangulation& tri, const std::vector<Source>& sources, FaceRecord<Real>* state,
+            std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
+            detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const;
+  template <class Real>
+  void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
+                 std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,
+                 std::vector<Index>* seeded, std::vector<Index>* reached) const;
+};
+
+// Seeds face f with a source at barycentric point b of the face (canonical coordinates are
+// exact for a point of the face itself); `offset` in normalised units.
+template <class Real>
+inline bool seed_face(const std::vector<double>& length, Index f, const double b[3], double scale, double offset,
+               Index source, FaceRecord<Real>* faces) {
+  double p[3][2];
+  detail::canonical_corners(length, f, scale, p);
+  const double sx = b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0];
+  const double sy = b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1];
+  const double gx = (p[0][0] + p[1][0] + p[2][0]) / 3, gy = (p[0][1] + p[1][1] + p[2][1]) / 3;
+  const Real dT = Real(offset + std::hypot(gx - sx, gy - sy));
+  FaceRecord<Real>& r = faces[f];
+  if (!(dT < r.dT)) return false;
+  r.sx = Real(sx), r.sy = Real(sy), r.sigma = Real(offset), r.dT = dT;
+  r.tag = (r.tag & ~detail::kSourceMask) | source;
+  return true;
+}
+
+inline const double kCornerWeights[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+// Distance of corner c's vertex through its face's virtual source (normalised units).
+template <class Real>
+inline Real corner_distance(const FaceRecord<Real>& r, Index corner) {
+  Real x = 0, y = 0;
+  if (corner == 1) x = r.len[0];
+  if (corner == 2) detail::canonical_corner2(r.len, x, y);
+  return r.sigma + std::sqrt((r.sx - x) * (r.sx - x) + (r.sy - y) * (r.sy - y));
+}
+
+
+}  // namespace gsp

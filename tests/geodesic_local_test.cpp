@@ -1,0 +1,137 @@
+// Bounded queries (GeodesicSolver::compute_local): the same numbers as compute() for everything
+// within max_distance, only the neighbourhood in the result, and a workspace that is put back
+// exactly after every query (so query order never matters).
+#include "helpers/geodesic_fixtures.hpp"
+
+#include <gsp/errors.hpp>
+#include <gsp/geodesics.hpp>
+#include <gsp/io/mesh_io.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+namespace gsp::test {
+namespace {
+
+TriangleMesh fertility() {
+  return io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+}
+
+double diagonal(const TriangleMesh& m) {
+  Vec3 lo = m.positions[0], hi = lo;
+  for (const Vec3& p : m.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return distance(lo, hi);
+}
+
+// compute_local against compute on the same (input) faces: identical vertex distances and
+// labels within max_distance, nothing beyond, identical face records for the faces reached.
+void expect_same(const GeodesicSolver& solver, LocalWorkspace& ws, const std::vector<Source>& sources,
+                 const GeodesicOptions& o) {
+  GeodesicOptions full_options = o;
+  full_options.want_face_sources = true;   // forces the input faces in compute()
+  const GeodesicResult full = solver.compute(sources, full_options);
+  const LocalField local = solver.compute_local(sources, o, ws);
+  std::size_t within = 0;
+  for (double d : full.vertex_distance) within += std::isfinite(d);
+  ASSERT_EQ(local.vertices.size(), within);
+  for (std::size_t k = 0; k < local.vertices.size(); ++k) {
+    const Index v = local.vertices[k];
+    EXPECT_EQ(local.vertex_distance[k], full.vertex_distance[v]) << "vertex " << v;
+    EXPECT_EQ(local.vertex_source[k], full.vertex_source[v]);
+    EXPECT_LE(local.vertex_distance[k], o.max_distance);
+  }
+  std::size_t reached = 0;
+  for (double d : full.face_distance) reached += std::isfinite(d);
+  ASSERT_EQ(local.faces.size(), reached);
+  EXPECT_EQ(local.stats.faces_reached, full.stats.faces_reached);
+  EXPECT_EQ(local.stats.update_steps, full.stats.update_steps);
+  for (std::size_t k = 0; k < local.faces.size(); ++k) {
+    const Index f = local.faces[k];
+    EXPECT_EQ(local.face_distance[k], full.face_distance[f]);
+    EXPECT_EQ(local.face_source[k], full.face_source[f]);
+    if (!o.want_face_sources) continue;
+    EXPECT_EQ(local.face_sources[k].sigma, full.face_sources[f].sigma);
+    EXPECT_EQ(distance(local.face_sources[k].position, full.face_sources[f].position), 0.0);
+  }
+}
+
+TEST(LocalQuery, SameNumbersAsComputeWithinTheRadius) {
+  const TriangleMesh m = fertility();
+  const GeodesicSolver solver(m);
+  LocalWorkspace ws = solver.make_workspace();
+  const double r = 0.08 * diagonal(m);
+  GeodesicOptions o;
+  o.max_distance = r;
+  SplitMix rng{11};
+  for (int trial = 0; trial < 6; ++trial) {
+    SCOPED_TRACE(trial);
+    o.want_face_sources = trial % 2 == 0;
+    o.precision = trial % 3 == 2 ? Precision::double_precision : Precision::single;
+    const Index f = Index(rng.next() % m.num_faces());
+    const Index v = Index(rng.next() % m.num_vertices());
+    expect_same(solver, ws, {Source::in_face(f, {0.2, 0.5, 0.3})}, o);
+    expect_same(solver, ws, {Source::in_face(f, {0.6, 0.2, 0.2}), Source::at_vertex(v, 0.01 * r)}, o);
+  }
+}
+
+// The result follows the neighbourhood: a small radius reaches a small part of the mesh.
+TEST(LocalQuery, CostFollowsTheNeighbourhood) {
+  const TriangleMesh m = fertility();
+  const GeodesicSolver solver(m);
+  LocalWorkspace ws = solver.make_workspace();
+  GeodesicOptions o;
+  o.max_distance = 0.02 * diagonal(m);
+  const LocalField small = solver.compute_local({Source::at_vertex(10)}, o, ws);
+  EXPECT_GT(small.vertices.size(), 3u);
+  EXPECT_LT(small.faces.size(), m.num_faces() / 50);
+  o.max_distance = std::numeric_limits<double>::infinity();
+  const LocalField all = solver.compute_local({Source::at_vertex(10)}, o, ws);
+  EXPECT_EQ(all.vertices.size(), m.num_vertices());   // fertility is one component
+}
+
+// Queries interleaved on one workspace give what each gives on a fresh one: the state is put
+// back exactly, also after a query that threw.
+TEST(LocalQuery, WorkspaceIsRestoredBetweenQueries) {
+  const TriangleMesh m = fertility();
+  const GeodesicSolver solver(m);
+  GeodesicOptions o;
+  o.max_distance = 0.1 * diagonal(m);
+  LocalWorkspace fresh_a = solver.make_workspace(), fresh_b = solver.make_workspace(), ws = solver.make_workspace();
+  const std::vector<Source> a{Source::in_face(100, {0.3, 0.3, 0.4})}, b{Source::at_vertex(3000)};
+  const LocalField ra = solver.compute_local(a, o, fresh_a), rb = solver.compute_local(b, o, fresh_b);
+  (void)solver.compute_local(b, o, ws);
+  EXPECT_THROW(solver.compute_local({Source::at_vertex(5), Source::at_vertex(99999999)}, o, ws), InvalidInput);
+  const LocalField again = solver.compute_local(a, o, ws);
+  EXPECT_EQ(again.vertices, ra.vertices);
+  EXPECT_EQ(again.vertex_distance, ra.vertex_distance);
+  EXPECT_EQ(again.faces, ra.faces);
+  const LocalField again_b = solver.compute_local(b, o, ws);
+  EXPECT_EQ(again_b.vertex_distance, rb.vertex_distance);
+}
+
+TEST(LocalQuery, Errors) {
+  const TriangleMesh m = grid(4);
+  const GeodesicSolver solver(m), other(m);
+  LocalWorkspace ws = other.make_workspace();
+  EXPECT_THROW(solver.compute_local({Source::at_vertex(0)}, {}, ws), InvalidInput);
+  LocalWorkspace mine = solver.make_workspace();
+  GeodesicOptions o;
+  o.targets = {3};
+  EXPECT_THROW(solver.compute_local({Source::at_vertex(0)}, o, mine), InvalidInput);
+  o.targets.clear();
+  o.max_distance = -1;
+  EXPECT_THROW(solver.compute_local({Source::at_vertex(0)}, o, mine), InvalidInput);
+  // On a plane the local field is exact like the full one.
+  o.max_distance = 2.5;
+  const LocalField f = solver.compute_local({Source::at_vertex(0)}, o, mine);
+  for (std::size_t k = 0; k < f.vertices.size(); ++k)
+    EXPECT_NEAR(f.vertex_distance[k], distance(m.positions[f.vertices[k]], m.positions[0]), 1e-5);
+}
+
+}  // namespace
+}  // namespace gsp::test
