@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 namespace {
 
 using namespace gsp;
@@ -77,6 +79,44 @@ TEST(SampleApp, PreviewPicture) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(dir / "s.png"));
   EXPECT_TRUE(fs::exists(dir / "s.glb"));
+}
+
+// --evaluate: the quality figures of a point set read from a file (e.g. MeshLab's). Our own
+// samples read back give our own figures: same count, min distance >= r, coverage <= r.
+TEST(SampleApp, EvaluateReadsAndMeasuresAPointSet) {
+  ScratchDir dir("sample");
+  const auto pts = dir / "s.ply";
+  RunResult r = run(kApp + " " + quote(kMesh) + " --radius 4% --seed 5 --stats - -o " + quote(pts.string()), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue made = parse_json(r.out);
+  const double radius = made["result"]["radius"].num;
+  char arg[64];
+  std::snprintf(arg, sizeof arg, "%.17g", radius);
+  r = run(kApp + " " + quote(kMesh) + " --evaluate " + quote(pts.string()) + " --radius " + arg + " --stats -", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue measured = parse_json(r.out);
+  EXPECT_EQ(measured["result"]["count"].num, made["result"]["count"].num);
+  EXPECT_LT(measured["result"]["max_snap_distance"].num, 1e-4 * radius);   // PLY stores floats
+  EXPECT_GE(measured["quality"]["min_distance_over_radius"].num, 0.999);
+  // Read back from floats and snapped again (a point on an edge may land in the neighbour face,
+  // whose GSP field differs slightly): coverage within 2% of r.
+  EXPECT_LE(measured["quality"]["coverage_over_radius"].num, 1.02);
+  EXPECT_NEAR(measured["quality"]["normalized_radius"].num, made["quality"]["normalized_radius"].num, 1e-9);
+  // A sparse set (every fourth point) leaves holes: coverage beyond r.
+  const io::ReadResult all = io::read_mesh(pts.string());
+  TriangleMesh sparse;
+  for (std::size_t i = 0; i < all.mesh.positions.size(); i += 4) sparse.positions.push_back(all.mesh.positions[i]);
+  io::write_mesh((dir / "sparse.ply").string(), sparse);
+  r = run(kApp + " " + quote(kMesh) + " --evaluate " + quote((dir / "sparse.ply").string()) + " --radius " + arg +
+              " --stats -", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(parse_json(r.out)["quality"]["coverage_over_radius"].num, 1.2);
+  // Usage: --evaluate needs --radius and takes no -o.
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --evaluate " + quote(pts.string()), dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --evaluate " + quote(pts.string()) + " --radius 1 -o " +
+                    quote((dir / "x.ply").string()), dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --evaluate " + quote((dir / "none.ply").string()) + " --radius 1", dir)
+                .exit_code, 1);
 }
 
 TEST(SampleApp, ErrorContract) {

@@ -6,14 +6,18 @@
 #include <gsp/cli/app.hpp>
 #include <gsp/cli/load.hpp>
 #include <gsp/cli/parse.hpp>
+#include <gsp/closest_point.hpp>
+#include <gsp/errors.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/render/preview_cli.hpp>
 #include <gsp/render/render.hpp>
 #include <gsp/sampling/quality.hpp>
 #include <gsp/sampling/sampler.hpp>
+#include <gsp/sampling/surface_points.hpp>
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -22,7 +26,7 @@ namespace {
 using namespace gsp;
 
 struct Options {
-  std::string input, output, radius, mode = "poisson";
+  std::string input, output, radius, mode = "poisson", evaluate;
   std::size_t count = 0;
   std::uint64_t seed = 1;
   std::size_t max_rejections = 500;
@@ -36,8 +40,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("INPUT", o.input, "input mesh (.ply .obj .off .stl .gltf .glb)")->required();
   app.add_option("-o,--output", o.output,
                  "samples: .ply (normals, int face, float u, v), .glb/.gltf (_FACE, _U, _V), .obj "
-                 "(points and normals), .txt (x y z nx ny nz face u v per line)")
-      ->required();
+                 "(points and normals), .txt (x y z nx ny nz face u v per line)");
+  app.add_option("--evaluate", o.evaluate, "instead of sampling: read these points (any mesh or point-cloud file, "
+                 "e.g. MeshLab's Poisson-disk output), snap them onto the surface and report the quality figures "
+                 "for --radius in --stats")->type_name("POINTS");
   app.add_option("--count", o.count, "number of samples (poisson: the radius is searched to meet it within 1%)")
       ->check(CLI::PositiveNumber);
   app.add_option("--radius", o.radius, "minimum geodesic distance between samples: model units, or \"2%\" "
@@ -87,7 +93,50 @@ void report(cli::Context& ctx, const sampling::Sampler& sampler, const sampling:
   ops["faces_reached"] = result.stats.faces_reached;
 }
 
+// --evaluate: the quality figures of someone else's point set at radius r.
+void evaluate(cli::Context& ctx, const Options& o, double radius_arg) {
+  const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  const io::ReadResult points = io::read_mesh(o.evaluate);
+  if (points.mesh.positions.empty()) throw InvalidInput(o.evaluate + ": no points");
+  const sampling::Sampler sampler(in.mesh);
+  sampling::SamplingResult result;
+  result.radius = radius_arg < 0 ? -radius_arg / 100.0 * sampler.diagonal() : radius_arg;
+  double snapped = 0;
+  ctx.timer().time("snap", [&] {
+    for (const Vec3& p : points.mesh.positions) {
+      const SurfacePoint s = closest_surface_point(in.mesh, p);
+      result.samples.push_back(sampling::make_sample(in.mesh, s.face, s.barycentric));
+      snapped = std::max(snapped, s.distance);
+    }
+  });
+  cli::Json& res = ctx.stats()["result"];
+  res["count"] = result.samples.size();
+  res["radius"] = result.radius;
+  res["radius_over_diagonal"] = result.radius / sampler.diagonal();
+  res["area"] = sampler.area();
+  res["max_snap_distance"] = snapped;
+  sampling::QualityOptions qo;
+  qo.max_checked = o.quality_samples;
+  qo.seed = o.seed;
+  const sampling::SamplingQuality q =
+      ctx.timer().time("quality", [&] { return sampling::measure_quality(sampler, result, qo); });
+  cli::Json& j = ctx.stats()["quality"];
+  j["samples_checked"] = q.samples_checked;
+  j["min_distance"] = q.min_distance;
+  j["min_distance_over_radius"] = q.min_distance_ratio;
+  j["coverage_radius"] = q.coverage_radius;
+  j["coverage_over_radius"] = q.coverage_ratio;
+  j["packing_radius"] = q.packing_radius;
+  j["normalized_radius"] = q.normalized_radius;
+}
+
 void run(cli::Context& ctx, const Options& o) {
+  if (!o.evaluate.empty()) {
+    if (o.radius.empty() || o.count) throw cli::UsageError("--evaluate needs --radius (and no --count)");
+    if (!o.output.empty()) throw cli::UsageError("--evaluate writes no samples: drop -o (the figures go to --stats)");
+    return evaluate(ctx, o, parse_radius(o.radius));
+  }
+  if (o.output.empty()) throw cli::UsageError("-o is required (or --evaluate POINTS)");
   if ((o.count > 0) == !o.radius.empty()) throw cli::UsageError("give exactly one of --count and --radius");
   const double radius_arg = o.radius.empty() ? 0.0 : parse_radius(o.radius);
   const render::RenderOptions preview = render::preview_options(o.preview);

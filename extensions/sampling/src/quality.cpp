@@ -30,9 +30,6 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
     std::vector<Index> fill(begin.begin(), begin.end() - 1);
     for (std::size_t i = 0; i < samples.size(); ++i) by_face[fill[samples[i].face]++] = Index(i);
   }
-  std::vector<Index> faces_with_samples;
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-    if (begin[f + 1] > begin[f]) faces_with_samples.push_back(Index(f));
 
   std::vector<bool> is_checked(samples.size(), options.max_checked == 0 || options.max_checked >= samples.size());
   if (!is_checked.empty() && !is_checked[0]) {
@@ -47,21 +44,24 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   const double inf = std::numeric_limits<double>::infinity();
   const double bound = std::isfinite(r) && r > 0 ? 2 * r : inf;
   GeodesicOptions go;
-  go.max_distance = bound + sampler.longest_edge();   // see Sampler::poisson for the edge
+  go.max_distance = bound;   // every face that can hold a point within it is reached
   go.want_face_sources = true;
   q.min_distance = bound;
   std::vector<double> coverage(mesh.num_vertices(), inf);
+  LocalWorkspace workspace = sampler.solver().make_workspace();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Sample& s = samples[i];
-    const GeodesicResult run = sampler.solver().compute({Source::in_face(s.face, s.barycentric)}, go);
-    for (std::size_t v = 0; v < coverage.size(); ++v) coverage[v] = std::min(coverage[v], run.vertex_distance[v]);
+    const LocalField run = sampler.solver().compute_local({Source::in_face(s.face, s.barycentric)}, go, workspace);
+    for (std::size_t k = 0; k < run.vertices.size(); ++k)
+      coverage[run.vertices[k]] = std::min(coverage[run.vertices[k]], run.vertex_distance[k]);
     if (is_checked[i]) {
       ++q.samples_checked;
-      for (Index f : faces_with_samples) {
-        if (!run.face_sources[f].reached()) continue;
+      for (std::size_t k = 0; k < run.faces.size(); ++k) {
+        const Index f = run.faces[k];
+        const VirtualSource& vs = run.face_sources[k];
         for (Index j = begin[f]; j < begin[f + 1]; ++j)
           if (by_face[j] != i)
-            q.min_distance = std::min(q.min_distance, run.distance_at(mesh, f, samples[by_face[j]].barycentric));
+            q.min_distance = std::min(q.min_distance, vs.sigma + distance(samples[by_face[j]].position, vs.position));
       }
     }
     if (options.progress) options.progress(double(i + 1) / double(samples.size() + 1));
