@@ -1,6 +1,7 @@
 // gsp-geodesic: geodesic distances on a triangle mesh from vertices, surface points or points
 // inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
 #include "batch_output.hpp"
+#include "line_sources.hpp"
 #include "metric_option.hpp"
 #include "options.hpp"
 #include "points.hpp"
@@ -102,6 +103,11 @@ void run(cli::Context& ctx, const Options& o) {
   cli::LoadOptions load = o.load;
   load.require_faces = o.domain == "mesh";   // auto and points accept a cloud
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
+  if (wants_line_sources(o)) {
+    if (metric.wanted()) throw cli::UsageError("--metric does not apply to line sources");
+    run_line_sources(ctx, o, in, max_distance, preview);
+    return;
+  }
   if (o.domain == "points" || (o.domain == "auto" && in.mesh.is_point_cloud())) {
     if (o.preview.wanted()) throw cli::UsageError("--png draws meshes: not with a point cloud");
     if (metric.wanted()) throw cli::UsageError("--metric needs a mesh: not with a point cloud");

@@ -23,6 +23,13 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--source-face", o.source_faces,
                  "source inside face F at barycentric weights u, v of its corners 1 and 2")
       ->type_name("F:U,V");
+  app.add_option("--source-polyline", o.source_polyline,
+                 "source: the polylines of FILE (OBJ `l` elements, or one \"x y z\" per line) laid onto the "
+                 "surface; distance to the segments, label = nearest segment (docs/lines.md)")
+      ->type_name("FILE");
+  app.add_option("--source-edges", o.source_edges, "source: these mesh edges (input vertex pairs)")
+      ->type_name("A-B[,B-C,...]");
+  app.add_flag("--source-boundary", o.source_boundary, "source: every boundary edge of the mesh");
   app.add_option("--max-distance", o.max_distance,
                  "stop at this distance (model units); farther vertices are unreached")
       ->type_name("D");

@@ -18,6 +18,9 @@ struct Options {
   std::vector<std::string> source_vertices;   // "I[,J,...]", repeatable
   std::vector<std::string> source_points;     // "x,y,z", repeatable
   std::vector<std::string> source_faces;      // "F:u,v", repeatable
+  std::string source_polyline;                // line sources (line_sources.hpp): OBJ or x y z file
+  std::string source_edges;                   // "a-b,b-c,..."
+  bool source_boundary = false;
   std::string max_distance;                   // empty: none
   std::string method = "gsp";                 // gsp | dijkstra
   std::string strategy = "speed-limiter";

@@ -38,7 +38,8 @@ ResolvedSources resolve_sources(const Options& o, const cli::LoadedMesh& in) {
                           b[2] * mesh.positions[t[2]]);
   }
   if (r.sources.empty())
-    throw cli::UsageError("no source: give --source-vertex, --source-point or --source-face");
+    throw cli::UsageError("no source: give --source-vertex, --source-point, --source-face, --source-polyline, "
+                          "--source-edges or --source-boundary");
   return r;
 }
 

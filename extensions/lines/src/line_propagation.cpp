@@ -1,0 +1,420 @@
+// Propagation of segment sources (docs/lines.md): every face keeps the few virtual source
+// segments ("waves") that are shortest at one of its sample points; a wave is carried
+// over an edge by unfolding its two ends into the neighbour's frame, and bends at the edge's end
+// vertex when the neighbour cannot see it through the edge. Faces are expanded in the order of
+// their waves' distances (a binary heap; a face improved later is expanded again).
+#include "face_frame.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/errors.hpp>
+#include <gsp/lines/line_distances.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <string>
+
+namespace gsp::lines {
+
+namespace {
+
+using detail::FaceFrame;
+using detail::Vec2;
+using detail::segment_distance;
+
+constexpr double kPi = 3.14159265358979323846;
+// Where a face compares its waves: the barycentric grid of order kGrid (corners first), so
+// a wave is kept wherever it is shortest at one of them. On a plane a wave is needed exactly
+// where its segment is the nearest one for some point of the face; a finer grid misses fewer of
+// the thin such regions (far from many short collinear segments), at the cost of more
+// comparisons per candidate.
+constexpr int kGrid = 4;
+constexpr int kSamples = (kGrid + 1) * (kGrid + 2) / 2;
+
+struct SampleTable {
+  std::array<std::array<double, 3>, kSamples> w;
+  SampleTable() {
+    int n = 3;
+    w[0] = {1, 0, 0}, w[1] = {0, 1, 0}, w[2] = {0, 0, 1};
+    for (int i = 0; i <= kGrid; ++i)
+      for (int j = 0; i + j <= kGrid; ++j) {
+        const int k = kGrid - i - j;
+        if (i == kGrid || j == kGrid || k == kGrid) continue;
+        w[n++] = {double(i) / kGrid, double(j) / kGrid, double(k) / kGrid};
+      }
+  }
+};
+const SampleTable kSampleTable;
+
+// A virtual source segment [a, b] in its face's canonical frame, `sigma` behind it.
+// a == b is a point source (a wave that bent at a vertex).
+struct Wave {
+  Vec2 a, b;
+  double sigma = 0;
+  Index segment = 0;
+};
+
+struct Slot {
+  Wave wave;
+  std::array<double, kSamples> at;   // distance at the face's samples
+  std::uint64_t id;
+};
+
+// At most one wave per sample survives (the shortest there); most faces hold one to three.
+struct FaceWaves {
+  std::vector<Slot> slot;
+};
+
+struct Entry {
+  double key;
+  Index face;
+  std::uint64_t id;
+  bool operator>(const Entry& o) const { return key > o.key; }
+};
+
+// Vertices no geodesic bends around: interior with angle sum 2 pi, boundary with at most pi
+// (a convex boundary corner), none on a non-manifold edge. A wave that loses sight of such a
+// vertex is carried straight on: every unfolding around it agrees, so planes stay exact.
+std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                        const std::vector<std::uint8_t>& skipped) {
+  const std::size_t nv = mesh.num_vertices();
+  std::vector<double> angle(nv, 0.0);
+  std::vector<std::uint8_t> boundary(nv, 0), singular(nv, 0);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (skipped[f]) continue;
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 a = mesh.positions[t[(i + 1) % 3]] - mesh.positions[t[i]];
+      const Vec3 b = mesh.positions[t[(i + 2) % 3]] - mesh.positions[t[i]];
+      angle[t[i]] += std::atan2(norm(cross(a, b)), dot(a, b));
+      const Index h = Index(3 * f + i);
+      const std::size_t ring = conn.ring_size(h);
+      if (ring == 1) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
+      if (ring > 2) singular[t[i]] = singular[t[(i + 1) % 3]] = 1;
+    }
+  }
+  constexpr double tol = 1e-6;   // as the core's (intrinsic_geometry.cpp)
+  std::vector<std::uint8_t> flat(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
+    flat[v] = !singular[v] && (boundary[v] ? angle[v] <= kPi * (1 + tol) : std::abs(angle[v] - 2 * kPi) <= 2 * kPi * tol);
+  return flat;
+}
+
+// Vertices where faces meet that no edge joins (two cones touching at their tips, CAD parts
+// sharing a corner): their fans of faces are edge-disconnected, so a wave would never cross
+// from one fan to the next. Such vertices pass their distance on as a point source (a bridge,
+// as in the core).
+std::vector<std::uint8_t> bridge_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                          const std::vector<std::uint8_t>& skipped) {
+  std::vector<std::uint8_t> bridge(mesh.num_vertices(), 0);
+  std::vector<Index> faces, parent;
+  for (Index v = 0; v < Index(mesh.num_vertices()); ++v) {
+    faces.clear();
+    for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k)
+      if (!skipped[face_of(conn.vertex_corners[k])]) faces.push_back(face_of(conn.vertex_corners[k]));
+    if (faces.size() < 2) continue;
+    parent.resize(faces.size());
+    for (std::size_t i = 0; i < faces.size(); ++i) parent[i] = Index(i);
+    auto root = [&](Index i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::size_t j = i + 1; j < faces.size(); ++j) {
+        int shared = 0;   // faces i and j share an edge through v when they share another vertex
+        for (Index x : mesh.triangles[faces[i]])
+          for (Index y : mesh.triangles[faces[j]]) shared += (x == y && x != v) ? 1 : 0;
+        if (shared > 0) parent[root(Index(i))] = root(Index(j));
+      }
+    for (std::size_t i = 1; i < faces.size(); ++i)
+      if (root(Index(i)) != root(0)) bridge[v] = 1;
+  }
+  return bridge;
+}
+
+class Propagation {
+ public:
+  Propagation(const TriangleMesh& mesh, const LineOptions& options)
+      : mesh_(mesh), options_(options), conn_(build_connectivity(mesh)) {
+    const std::size_t nf = mesh.num_faces();
+    frames_.resize(nf);
+    skipped_.assign(nf, 0);
+    faces_.resize(nf);
+    double total = 0;
+    std::size_t edges = 0;
+    for (Index f = 0; f < Index(nf); ++f) {
+      skipped_[f] = detail::repeats_vertex(mesh.triangles[f]);
+      if (skipped_[f]) continue;
+      frames_[f] = detail::face_frame(mesh, f);
+      for (double l : frames_[f].len) total += l, ++edges;
+    }
+    scale_ = edges ? total / double(edges) : 1.0;
+    flat_ = flat_vertices(mesh, conn_, skipped_);
+    bridge_ = bridge_vertices(mesh, conn_, skipped_);
+    distance_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
+    segment_.assign(mesh.num_vertices(), kInvalidIndex);
+  }
+
+  void seed(const LineSource& src) {
+    std::vector<std::uint8_t> seeded(mesh_.num_faces(), 0);
+    for (std::size_t i = 0; i < src.pieces.size(); ++i) {
+      const SegmentPiece& p = src.pieces[i];
+      const std::string name = "line source piece " + std::to_string(i);
+      if (p.face >= mesh_.num_faces())
+        throw InvalidInput(name + ": face " + std::to_string(p.face) + " does not exist");
+      if (!(p.before >= 0 && p.after >= 0))
+        throw InvalidInput(name + ": before and after must be >= 0");
+      if (p.segment >= src.num_segments())
+        throw InvalidInput(name + ": segment " + std::to_string(p.segment) + " does not exist");
+      check_weights(p.start, name);
+      check_weights(p.end, name);
+      if (skipped_[p.face]) continue;   // a face without a plane: its edges carry the piece
+      const FaceFrame& fr = frames_[p.face];
+      if (!seeded[p.face]) ++stats_.faces_seeded, seeded[p.face] = 1;
+      Vec2 a = fr.at(p.start), b = fr.at(p.end);
+      const double len = detail::length(b - a);
+      if (len > 0 && (p.before > 0 || p.after > 0)) {   // the whole straight run (line_source.hpp)
+        const Vec2 dir = (1.0 / len) * (b - a);
+        a = a - p.before * dir;
+        b = b + p.after * dir;
+      }
+      offer(p.face, {a, b, 0.0, p.segment});
+    }
+    stats_.segments = src.num_segments();
+    stats_.pieces = src.pieces.size();
+  }
+
+  void run() {
+    cross_bridges();
+    while (!queue_.empty()) {
+      const Entry e = queue_.top();
+      queue_.pop();
+      expand(e);
+      cross_bridges();
+    }
+  }
+
+  LineResult result() {
+    LineResult r;
+    for (std::size_t v = 0; v < distance_.size(); ++v)
+      if (!(distance_[v] <= options_.max_distance))
+        distance_[v] = std::numeric_limits<double>::infinity(), segment_[v] = kInvalidIndex;
+    for (const FaceWaves& f : faces_) {
+      if (!f.slot.empty()) ++stats_.faces_reached;
+      stats_.max_waves_per_face = std::max<std::uint64_t>(stats_.max_waves_per_face, f.slot.size());
+    }
+    r.vertex_distance = std::move(distance_);
+    r.vertex_segment = std::move(segment_);
+    r.stats = stats_;
+    return r;
+  }
+
+ private:
+  static void check_weights(const std::array<double, 3>& w, const std::string& name) {
+    const double sum = w[0] + w[1] + w[2];
+    if (!(w[0] >= -1e-9 && w[1] >= -1e-9 && w[2] >= -1e-9) || !(std::abs(sum - 1) <= 1e-6))
+      throw InvalidInput(name + ": barycentric weights must be >= 0 and sum to 1");
+  }
+
+  // Keeps `w` in face f if it is clearly shorter than every wave there at one sample at least;
+  // waves no longer shortest anywhere are dropped. Returns whether it was kept.
+  //
+  // `bent` (>= 0) names a corner the wave does not see straight (carry()): that vertex gets
+  // `bent_value`, the path round the edge's end, instead of the straight unfolded distance.
+  bool offer(Index f, const Wave& w, int bent = -1, double bent_value = 0) {
+    ++stats_.candidates;
+    const FaceFrame& fr = frames_[f];
+    std::array<double, kSamples> at;
+    double key = std::numeric_limits<double>::infinity();
+    for (int s = 0; s < kSamples; ++s) {
+      const Vec2 p = fr.at(kSampleTable.w[s]);
+      at[s] = w.sigma + segment_distance(p, w.a, w.b);
+      key = std::min(key, at[s]);
+    }
+    if (!(key <= options_.max_distance)) return false;
+    FaceWaves& fw = faces_[f];
+    // One wave per segment in a face: another unfolding of the same segment (round the other
+    // side of a hill, or the same one rounded differently) replaces it only when it is shorter
+    // over the whole face (the sum over the samples, like the core's centroid distance). Keeping
+    // both would let every path's variant travel on: measured 15,000 candidates per face.
+    const int n = int(fw.slot.size());
+    int same = -1;
+    for (int i = 0; i < n; ++i)
+      if (fw.slot[i].wave.segment == w.segment) same = i;
+    if (same >= 0) {
+      double sum_new = 0, sum_old = 0;
+      for (int s = 0; s < kSamples; ++s) sum_new += at[s], sum_old += fw.slot[same].at[s];
+      if (!(sum_new < sum_old - 1e-12 * (sum_old + kSamples * scale_))) return false;
+    }
+    // Among different segments: kept where it is clearly shortest at one sample at least. Only
+    // a clear improvement counts: one lost in rounding would bounce between faces forever.
+    std::array<int, kSamples> winner;
+    bool useful = false;
+    for (int s = 0; s < kSamples; ++s) {
+      int best = -1;
+      for (int i = 0; i < n; ++i)
+        if (i != same && (best < 0 || fw.slot[i].at[s] < fw.slot[best].at[s])) best = i;
+      const bool better = best < 0 || at[s] < fw.slot[best].at[s] - 1e-12 * (fw.slot[best].at[s] + scale_);
+      winner[s] = better ? kSamples : best;
+      useful = useful || better;
+    }
+    if (!useful) return false;
+    std::size_t kept = 0;
+    for (int i = 0; i < n; ++i)
+      if (i != same && std::find(winner.begin(), winner.end(), i) != winner.end()) fw.slot[kept++] = fw.slot[i];
+    fw.slot.resize(kept);
+    const std::uint64_t id = ++next_id_;
+    fw.slot.push_back(Slot{w, at, id});
+    ++stats_.waves_accepted;
+    const Triangle& t = mesh_.triangles[f];
+    for (int c = 0; c < 3; ++c) {
+      const double d = c == bent ? bent_value : at[c];
+      if (!(d < distance_[t[c]])) continue;
+      distance_[t[c]] = d, segment_[t[c]] = w.segment;
+      if (bridge_[t[c]]) bridge_pending_.push_back(t[c]);
+    }
+    queue_.push({key, f, id});
+    return true;
+  }
+
+  // A point source at every bridge vertex whose distance dropped, offered to all its faces.
+  void cross_bridges() {
+    while (!bridge_pending_.empty()) {
+      const Index v = bridge_pending_.back();
+      bridge_pending_.pop_back();
+      for (Index k = conn_.vertex_corner_begin[v]; k < conn_.vertex_corner_begin[v + 1]; ++k) {
+        const Index f = face_of(conn_.vertex_corners[k]);
+        if (skipped_[f]) continue;
+        const Vec2 p = frames_[f].corner[corner_of(conn_.vertex_corners[k])];
+        offer(f, {p, p, distance_[v], segment_[v]});
+      }
+    }
+  }
+
+  void expand(const Entry& e) {
+    const FaceWaves& fw = faces_[e.face];
+    std::size_t i = 0;
+    while (i < fw.slot.size() && fw.slot[i].id != e.id) ++i;
+    if (i == fw.slot.size()) {
+      ++stats_.stale_skipped;
+      return;
+    }
+    ++stats_.expansions;
+    const Wave w = fw.slot[i].wave;   // a copy: offering below may rewrite this face's slots
+    for (int j = 0; j < 3; ++j) {
+      const Index h = Index(3 * e.face + j);
+      for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g])
+        if (!skipped_[face_of(g)]) carry(w, e.face, h, g);
+    }
+  }
+
+  // Carries wave w of face u over halfedge h into the face of g (a halfedge on the same edge).
+  void carry(const Wave& w, Index u, Index h, Index g) {
+    const FaceFrame& fu = frames_[u];
+    const int j = int(corner_of(h));
+    const double e1 = fu.len[j];
+    // Into g's edge frame (its face on +y, u's on -y). x is measured from the other end
+    // unless the two faces disagree in orientation and walk the edge the same way.
+    const bool same_dir = from_vertex(mesh_, h) == from_vertex(mesh_, g);
+    auto unfold = [&](Vec2 p) {
+      const Vec2 q = fu.to_edge(j, p);
+      return Vec2{same_dir ? q.x : e1 - q.x, -q.y};
+    };
+    const Vec2 a = unfold(w.a), b = unfold(w.b);
+    const Index t = face_of(g);
+    const FaceFrame& ft = frames_[t];
+    const int k = int(corner_of(g));
+    const Vec2 A{0, 0}, B{e1, 0}, P = ft.to_edge(k, ft.corner[(k + 2) % 3]);
+
+    // The probe Q between the opposite corner and the centroid (the core's heuristic): the
+    // wave is visible when the straight line from Q to the nearest point of the segment
+    // crosses the edge.
+    const Vec2 C = (1.0 / 3.0) * (A + B + P);
+    const double max_e = std::max({ft.len[0], ft.len[1], ft.len[2]});
+    const double min_e = std::min({ft.len[0], ft.len[1], ft.len[2]});
+    const double lambda = e1 > 0 ? options_.heuristic.blend(e1, max_e, min_e, P.y) : 1.0;
+    const Vec2 Q = P + lambda * (C - P);
+    const Vec2 N = detail::nearest_on_segment(Q, a, b);
+    const double eps = 1e-9 * scale_;
+    int kind = 0;   // 0: straight on, 1: bend at A, 2: bend at B
+    const bool same_side = N.y > eps;
+    if (!same_side) {
+      const double denom = Q.y - N.y;
+      if (denom > 0) {
+        const double xc = Q.x + (N.x - Q.x) * (Q.y / denom);
+        kind = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
+      }
+    } else {
+      // The nearest point lies on t's side: the segment was carried round a vertex. Bend at
+      // the end of the edge that gives the shorter path to Q — even at a flat vertex, as the
+      // core does: carried on, a wave can circle a vertex that is flat only to 1e-6 and come
+      // back a little shorter every round (measured on the bunny: 370 million candidates).
+      const double via_a = segment_distance(A, a, b) + detail::length(Q - A);
+      const double via_b = segment_distance(B, a, b) + detail::length(Q - B);
+      kind = via_a <= via_b ? 1 : 2;
+    }
+    const Triangle& tt = mesh_.triangles[t];
+    if (!same_side && kind == 1 && flat_[tt[k]]) kind = 0;
+    if (!same_side && kind == 2 && flat_[tt[(k + 1) % 3]]) kind = 0;
+
+    Wave n;
+    n.segment = w.segment;
+    int bent = -1;
+    double bent_value = 0;
+    if (kind == 0) {
+      n.a = ft.from_edge(k, a), n.b = ft.from_edge(k, b), n.sigma = w.sigma;
+      // The probe sees the wave, but the opposite corner P may not (the wave passes the edge's
+      // end on its way to P): on a curved surface the straight unfolded distance to P would
+      // cut across the missing angle round that vertex and come out too short.
+      const Vec2 NP = detail::nearest_on_segment(P, a, b);
+      int side = 0;
+      if (NP.y > eps) {
+        const double via_a = segment_distance(A, a, b) + detail::length(P - A);
+        const double via_b = segment_distance(B, a, b) + detail::length(P - B);
+        side = via_a <= via_b ? 1 : 2;
+      } else if (P.y - NP.y > 0) {
+        const double xc = P.x + (NP.x - P.x) * (P.y / (P.y - NP.y));
+        side = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
+      }
+      if (side == 1 && flat_[tt[k]]) side = 0;
+      if (side == 2 && flat_[tt[(k + 1) % 3]]) side = 0;
+      if (side != 0) {
+        const Vec2 corner = side == 1 ? A : B;
+        bent = (k + 2) % 3;
+        bent_value = w.sigma + segment_distance(corner, a, b) + detail::length(P - corner);
+      }
+    } else {
+      const Vec2 corner = kind == 1 ? A : B;
+      n.a = n.b = ft.corner[kind == 1 ? k : (k + 1) % 3];
+      n.sigma = w.sigma + segment_distance(corner, a, b);
+    }
+    if (offer(t, n, bent, bent_value) && kind != 0) ++stats_.bends;
+  }
+
+  const TriangleMesh& mesh_;
+  LineOptions options_;
+  Connectivity conn_;
+  std::vector<FaceFrame> frames_;
+  std::vector<std::uint8_t> skipped_, flat_, bridge_;
+  std::vector<Index> bridge_pending_;
+  std::vector<FaceWaves> faces_;
+  std::vector<double> distance_;
+  std::vector<Index> segment_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+  std::uint64_t next_id_ = 0;
+  double scale_ = 1;
+  LineStats stats_;
+};
+
+}  // namespace
+
+LineResult line_distances(const TriangleMesh& mesh, const LineSource& source, const LineOptions& options) {
+  validate(mesh);
+  Propagation p(mesh, options);
+  p.seed(source);
+  p.run();
+  return p.result();
+}
+
+}  // namespace gsp::lines
