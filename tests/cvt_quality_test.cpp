@@ -5,7 +5,9 @@
 
 #include <gsp/closest_point.hpp>
 #include <gsp/cvt/closest_point_index.hpp>
+#include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/quality.hpp>
+#include <gsp/cvt/remesh.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/sampling/random.hpp>
@@ -13,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 namespace {
 
@@ -61,6 +64,40 @@ TEST(CvtQuality, GridValences) {
   EXPECT_EQ(sum, 2u * 56u);
   EXPECT_EQ(count, 25u);
   EXPECT_NEAR(q.mean_edge_length, (40 * 0.25 + 16 * 0.25 * std::sqrt(2.0)) / 56, 1e-12);
+}
+
+TEST(CvtRemeshFlips, RaiseAnglesKeepVerticesAndCount) {
+  // restricted_delaunay with and without the edge flips on one (deliberately unconverged) CVT.
+  const TriangleMesh m = test::square_grid(24);
+  cvt::CvtOptions o;
+  o.sites = 120;
+  o.max_iterations = 3;   // not converged: some dual edges are not Delaunay
+  const cvt::CvtResult cvt = cvt::compute_cvt(m, o);
+  cvt::RemeshOptions no;
+  no.flip_edges = false;
+  const cvt::RemeshResult a = cvt::restricted_delaunay(cvt, no), b = cvt::restricted_delaunay(cvt);
+  EXPECT_EQ(a.stats.flips, 0u);
+  EXPECT_EQ(a.mesh.num_faces(), b.mesh.num_faces());
+  EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+  const cvt::MeshQuality qa = cvt::measure_mesh_quality(a.mesh), qb = cvt::measure_mesh_quality(b.mesh);
+  EXPECT_GE(qb.min_angle, qa.min_angle);
+  if (b.stats.flips > 0) EXPECT_GT(qb.mean_min_angle, qa.mean_min_angle);
+  // Flat input: after the flips no interior edge of the (planar) dual is non-Delaunay.
+  std::map<std::pair<Index, Index>, Index> opposite;
+  for (const Triangle& t : b.mesh.triangles)
+    for (int i = 0; i < 3; ++i) opposite[{t[i], t[(i + 1) % 3]}] = t[(i + 2) % 3];
+  auto angle = [&](Index p, Index q, Index r) {
+    const Vec3 u = b.mesh.positions[q] - b.mesh.positions[p], v = b.mesh.positions[r] - b.mesh.positions[p];
+    return std::atan2(norm(cross(u, v)), dot(u, v));
+  };
+  std::size_t non_delaunay = 0;
+  for (const auto& [edge, c] : opposite) {
+    const auto other = opposite.find({edge.second, edge.first});
+    if (other == opposite.end()) continue;
+    non_delaunay += angle(c, edge.first, edge.second) + angle(other->second, edge.second, edge.first) > M_PI + 1e-9;
+  }
+  // A flip that would not raise the smaller minimum angle is not made, so a few may remain.
+  EXPECT_LE(non_delaunay, 2u * 2u);
 }
 
 TEST(CvtClosestPoint, MatchesLinearScan) {

@@ -29,7 +29,7 @@ struct Options {
   double tolerance = 1e-4;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
-  bool no_fix = false, ascii = false;
+  bool no_fix = false, no_flip = false, ascii = false;
   cli::LoadOptions load;
 };
 
@@ -44,13 +44,14 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--iterations", o.iterations, "Lloyd iteration cap (default 50)")->check(CLI::NonNegativeNumber);
   app.add_option("--tolerance", o.tolerance, "stop when the energy's relative decrease is below this (default 1e-4)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--init", o.init, "initial sites: poisson (default) or farthest")
-      ->check(CLI::IsMember({"poisson", "farthest"}));
+  app.add_option("--init", o.init, "initial sites: poisson (default), farthest or random (area-uniform)")
+      ->check(CLI::IsMember({"poisson", "farthest", "random"}));
   app.add_option("--seed", o.seed, "random seed of the initial sites");
   app.add_option("--regions", o.regions,
                  "also write the input mesh with an int vertex `label` (its region) and a colour per region "
                  "(.ply .obj .off .glb .gltf)");
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
+  app.add_flag("--no-flip", o.no_flip, "write the restricted Delaunay dual as it is, without the angle-raising edge flips");
   app.add_option("--hausdorff-samples", o.hausdorff_samples,
                  "with --stats: area-uniform points per surface for the Hausdorff distance (default 200000)");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
@@ -89,7 +90,9 @@ void run(cli::Context& ctx, const Options& o) {
   co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bbox_diagonal(in.mesh) : length_arg;
   co.max_iterations = o.iterations;
   co.tolerance = o.tolerance;
-  co.initial = o.init == "farthest" ? cvt::InitialSites::farthest : cvt::InitialSites::poisson;
+  co.initial = o.init == "farthest" ? cvt::InitialSites::farthest
+               : o.init == "random"  ? cvt::InitialSites::random
+                                     : cvt::InitialSites::poisson;
   co.seed = o.seed;
   co.fix_regions = !o.no_fix;
   ctx.settings()["method"] = "lloyd-gsp";
@@ -100,6 +103,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["init"] = o.init;
   ctx.settings()["seed"] = o.seed;
   ctx.settings()["fix_regions"] = co.fix_regions;
+  ctx.settings()["flip_edges"] = !o.no_flip;
 
   // A progress line per iteration: the bar counts iterations against the cap, the label
   // carries the energy.
@@ -117,7 +121,9 @@ void run(cli::Context& ctx, const Options& o) {
   cvt_app::report_cvt(ctx, result);
 
   auto dual_scope = ctx.timer().scope("remesh");
-  const cvt::RemeshResult remesh = cvt::restricted_delaunay(result);
+  cvt::RemeshOptions ro;
+  ro.flip_edges = !o.no_flip;
+  const cvt::RemeshResult remesh = cvt::restricted_delaunay(result, ro);
   dual_scope.stop();
   const TopologyReport topo_in = analyze_topology(in.mesh, build_connectivity(in.mesh));
   const TopologyReport topo_out = analyze_topology(remesh.mesh, build_connectivity(remesh.mesh));

@@ -85,6 +85,7 @@ void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const Top
   res["duplicate_triangles"] = remesh.stats.duplicate_triangles;
   res["skipped_junctions"] = remesh.stats.skipped_junctions;
   res["unused_sites"] = remesh.stats.unused_sites;
+  res["flips"] = remesh.stats.flips;
   ctx.stats()["topology"]["input"] = topology_json(input);
   ctx.stats()["topology"]["output"] = topology_json(output);
 }

@@ -1,4 +1,5 @@
 // The restricted Delaunay dual of face-labelled Voronoi regions (see remesh.hpp).
+#include "flips.hpp"
 #include "junctions.hpp"
 
 #include <gsp/cvt/remesh.hpp>
@@ -6,11 +7,11 @@
 
 namespace gsp::cvt {
 
-RemeshResult restricted_delaunay(const CvtResult& cvt) {
+RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& options) {
   const TriangleMesh& m = cvt.working.mesh;
   const std::vector<Index>& label = cvt.working_face_label;
   if (label.size() != m.num_faces()) throw InvalidInput("restricted_delaunay: labels do not match the working mesh");
-  detail::DualTriangles d = detail::dual_triangles(m, build_connectivity(m), label);
+  detail::DualTriangles d = detail::dual_triangles(m, build_connectivity(m), label, cvt.working_site_position);
   RemeshResult r;
   r.stats = d.stats;
   std::vector<Index> remap(cvt.sites.size(), kInvalidIndex);
@@ -25,6 +26,7 @@ RemeshResult restricted_delaunay(const CvtResult& cvt) {
     }
   r.mesh.triangles = std::move(d.triangles);
   r.stats.unused_sites = cvt.sites.size() - r.vertex_site.size();
+  if (options.flip_edges) r.stats.flips = detail::improve_by_flips(r.mesh, options.flip_max_normal_angle);
   return r;
 }
 

@@ -2,6 +2,7 @@
 #include "junctions.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -62,9 +63,25 @@ bool vertex_fan(const TriangleMesh& m, const Connectivity& conn, Index v, std::v
   return fan.size() == e - b;
 }
 
+// Smallest angle (as its cosine's complement: larger is better) of triangle (a, b, c).
+double min_angle(Vec3 a, Vec3 b, Vec3 c) {
+  auto angle = [](Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); };
+  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+// The worst angle of the fan from seq[s] over the triangles (s, s+i, s+i+1), i = 1..count.
+double fan_quality(const std::vector<Index>& seq, std::size_t s, std::size_t count, const std::vector<Vec3>& p) {
+  const std::size_t k = seq.size();
+  double worst = 10;
+  for (std::size_t i = 1; i <= count; ++i)
+    worst = std::min(worst, min_angle(p[seq[s]], p[seq[(s + i) % k]], p[seq[(s + i + 1) % k]]));
+  return worst;
+}
+
 }  // namespace
 
-DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, const std::vector<Index>& label) {
+DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, const std::vector<Index>& label,
+                             const std::vector<Vec3>& sites) {
   DualTriangles d;
   std::set<std::array<Index, 3>> seen;
   Index vertex = 0;
@@ -99,16 +116,28 @@ DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, co
       continue;
     }
     if (seq.size() > 3) d.stats.junctions_over_three++;
+    const std::size_t k = seq.size();
     if (closed) {
-      // A polygon of k regions: fan from its smallest label, so that the same regions meeting
-      // elsewhere get the same triangles.
-      const std::size_t k = seq.size();
-      const std::size_t s = std::size_t(std::min_element(seq.begin(), seq.end()) - seq.begin());
-      for (std::size_t i = 1; i + 1 < k; ++i) emit(seq[s], seq[(s + i) % k], seq[(s + i + 1) % k]);
+      // A polygon of k regions: fanned from the corner whose fan has the largest smallest angle
+      // (for four regions: the better diagonal of the quad).
+      std::size_t best = 0;
+      if (k > 3) {
+        double q = -1;
+        for (std::size_t s = 0; s < k; ++s) {
+          const double qs = fan_quality(seq, s, k - 2, sites);
+          if (qs > q) q = qs, best = s;
+        }
+      }
+      for (std::size_t i = 1; i + 1 < k; ++i) emit(seq[best], seq[(best + i) % k], seq[(best + i + 1) % k]);
     } else {
       // Open fan: the outside closes the polygon between the last and the first region; the
-      // triangles that would use it are left out.
-      for (std::size_t i = 1; i + 1 < seq.size(); ++i) emit(seq[0], seq[i], seq[i + 1]);
+      // triangles that would use it are left out. Fanning from the first or the last region
+      // keeps the edge between them (the dual's boundary edge here); the better one is taken.
+      const bool from_last = k > 3 && fan_quality(seq, k - 1, k - 2, sites) > fan_quality(seq, 0, k - 2, sites);
+      for (std::size_t i = 1; i + 1 < k; ++i) {
+        if (from_last) emit(seq[k - 1], seq[(k - 1 + i) % k], seq[(k - 1 + i + 1) % k]);
+        else emit(seq[0], seq[i], seq[i + 1]);
+      }
     }
   }
   return d;

@@ -17,7 +17,10 @@ struct DualTriangles {
   RemeshStats stats;
 };
 
-DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, const std::vector<Index>& label);
+// `sites`: site positions; where more than three regions meet, the polygon is fanned from
+// the corner that gives the largest smallest angle.
+DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, const std::vector<Index>& label,
+                             const std::vector<Vec3>& sites);
 
 // Working vertices of triangles beyond the second on a dual edge (two regions whose common
 // border has more than two ends).

@@ -108,7 +108,7 @@ class Lloyd {
       }
     }
     fix_boundary(e, flagged, added);
-    fix_junctions(e, added);
+    fix_junctions(e, sites, added);
     // Sites that lost their whole region (another site took their face): to the farthest points.
     std::vector<Index> lost;
     for (Index s = 0; s < n; ++s)
@@ -249,8 +249,10 @@ class Lloyd {
   // Where the dual would not be a manifold (the same three regions meeting twice, a region met
   // twice around a vertex, two regions whose border has more than two ends): a new site at
   // that vertex splits the region that causes it.
-  void fix_junctions(const Evaluation& e, std::vector<SurfaceSite>& added) {
-    const DualTriangles d = dual_triangles(g_.mesh, g_.conn, e.label);
+  void fix_junctions(const Evaluation& e, const std::vector<SurfaceSite>& sites, std::vector<SurfaceSite>& added) {
+    std::vector<Vec3> positions(sites.size());
+    for (std::size_t i = 0; i < sites.size(); ++i) positions[i] = sites[i].position;
+    const DualTriangles d = dual_triangles(g_.mesh, g_.conn, e.label, positions);
     std::vector<Index> vertices = d.trouble_vertices;
     for (Index v : overused_edge_vertices(d)) vertices.push_back(v);
     std::sort(vertices.begin(), vertices.end());
@@ -314,6 +316,15 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   so.seed = o.seed;
   so.count_tolerance = 0.02;
   std::vector<SurfaceSite> sites;
+  const sampling::AreaSampler uniform(w.mesh);
+  sampling::Random random(o.seed ^ 0x5eed5eedULL);
+  if (o.initial == InitialSites::random) {
+    while (sites.size() < n) {
+      const sampling::Sample s = uniform.draw(w.mesh, random);
+      sites.push_back(g.at(s.face, s.barycentric));
+    }
+    return sites;
+  }
   const bool on_input = so.mode == sampling::Mode::poisson || n <= mesh.num_vertices() / 2;
   if (!on_input) {
     const sampling::Sampler sampler(w.mesh);
@@ -335,8 +346,6 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   // The radius search meets the count within 2%: trim the last accepted samples (the vertex
   // fill, which plugs the smallest gaps) or add area-uniform points; Lloyd evens both out.
   if (sites.size() > n) sites.resize(n);
-  const sampling::AreaSampler uniform(w.mesh);
-  sampling::Random random(o.seed ^ 0x5eed5eedULL);
   while (sites.size() < n) {
     const sampling::Sample s = uniform.draw(w.mesh, random);
     sites.push_back(g.at(s.face, s.barycentric));

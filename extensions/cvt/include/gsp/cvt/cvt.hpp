@@ -22,7 +22,10 @@
 
 namespace gsp::cvt {
 
-enum class InitialSites { poisson, farthest };
+// poisson: geodesic Poisson-disk samples (gsp::sampling, count search on the input mesh);
+// farthest: farthest-point samples; random: area-uniform white noise (no propagation at all,
+// Lloyd then needs more iterations).
+enum class InitialSites { poisson, farthest, random };
 
 // Called after every evaluated iteration (0 = the initial sites).
 struct IterationInfo {

@@ -14,12 +14,23 @@
 
 namespace gsp::cvt {
 
+struct RemeshOptions {
+  // Flip edges of the dual that are not locally Delaunay when that raises the smaller of the
+  // two triangles' smallest angles, across nearly flat pairs only (normals within
+  // `flip_max_normal_angle` degrees). The restricted Delaunay dual of face-granular regions
+  // has such edges where four regions meet at two nearby vertices instead of one. Vertices
+  // and topology are unchanged.
+  bool flip_edges = true;
+  double flip_max_normal_angle = 20.0;
+};
+
 struct RemeshStats {
   std::size_t junctions = 0;            // working vertices where >= 3 regions meet
   std::size_t junctions_over_three = 0; // of which more than three (fanned polygons)
   std::size_t duplicate_triangles = 0;  // the same three regions meeting again (dropped)
   std::size_t skipped_junctions = 0;    // a region met twice around one vertex, or a non-manifold vertex
   std::size_t unused_sites = 0;         // sites without a triangle (not in the output)
+  std::size_t flips = 0;                // edges flipped (RemeshOptions::flip_edges)
 };
 
 struct RemeshResult {
@@ -28,6 +39,6 @@ struct RemeshResult {
   RemeshStats stats;
 };
 
-RemeshResult restricted_delaunay(const CvtResult& cvt);
+RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& options = {});
 
 }  // namespace gsp::cvt

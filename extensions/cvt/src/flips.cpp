@@ -1,0 +1,72 @@
+#include "flips.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace gsp::cvt::detail {
+
+namespace {
+
+std::uint64_t key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }
+
+double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); }
+
+double min_angle(Vec3 a, Vec3 b, Vec3 c) { return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}); }
+
+Vec3 normal(Vec3 a, Vec3 b, Vec3 c) { return cross(b - a, c - a); }
+
+}  // namespace
+
+std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int max_passes) {
+  const double cos_limit = std::cos(max_normal_angle_deg * 3.14159265358979323846 / 180.0);
+  // Directed edge (a, b) -> 3 * face + corner of a.
+  std::unordered_map<std::uint64_t, Index> directed;
+  directed.reserve(3 * m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f)
+    for (Index i = 0; i < 3; ++i) directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
+  auto edge_exists = [&](Index a, Index b) { return directed.count(key(a, b)) || directed.count(key(b, a)); };
+  std::size_t flips = 0;
+  for (int pass = 0; pass < max_passes; ++pass) {
+    std::size_t this_pass = 0;
+    for (Index f = 0; f < m.num_faces(); ++f)
+      for (Index i = 0; i < 3; ++i) {
+        const Triangle t = m.triangles[f];
+        const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+        const auto it = directed.find(key(b, a));
+        if (it == directed.end()) continue;   // boundary or inconsistently oriented
+        const Index g = it->second / 3, j = it->second % 3;
+        if (g == f) continue;
+        const Index d = m.triangles[g][(j + 2) % 3];
+        if (d == c || edge_exists(c, d)) continue;
+        const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c], pd = m.positions[d];
+        if (angle_at(pc, pa, pb) + angle_at(pd, pb, pa) <= 3.14159265358979323846 + 1e-12) continue;
+        const double before = std::min(min_angle(pa, pb, pc), min_angle(pb, pa, pd));
+        const double after = std::min(min_angle(pa, pd, pc), min_angle(pd, pb, pc));
+        if (after <= before) continue;
+        // No fold: both new triangles face the way the old pair faces, and the old pair is
+        // nearly flat (not a crease, where a flip would change the shape).
+        const Vec3 n1 = normal(pa, pb, pc), n2 = normal(pb, pa, pd);
+        const Vec3 m1 = normal(pa, pd, pc), m2 = normal(pd, pb, pc);
+        if (dot(n1, n2) < cos_limit * norm(n1) * norm(n2)) continue;
+        const Vec3 n = n1 + n2;
+        if (dot(m1, n) <= 0 || dot(m2, n) <= 0) continue;
+        for (Index k = 0; k < 3; ++k) {
+          directed.erase(key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
+          directed.erase(key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
+        }
+        m.triangles[f] = {a, d, c};
+        m.triangles[g] = {d, b, c};
+        for (Index k = 0; k < 3; ++k) {
+          directed[key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
+          directed[key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
+        }
+        ++this_pass;
+      }
+    flips += this_pass;
+    if (this_pass == 0) break;
+  }
+  return flips;
+}
+
+}  // namespace gsp::cvt::detail
