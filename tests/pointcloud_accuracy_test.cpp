@@ -69,9 +69,9 @@ Errors measure(const std::string& path, int sources) {
   return e;
 }
 
-// The issue asks for MRE <= 2% and <= 1/3 of Dijkstra's on the same graph. The first holds;
-// the second does not yet on every mesh (docs/pointcloud.md: the ratio is 1/4 to 1/1.5), so
-// the test pins what holds: better than Dijkstra by `factor`.
+// The issue asks for MRE <= 2% and <= 1/3 of Dijkstra's on the same graph. Measured
+// (docs/pointcloud.md): fertility 3.6x on these 3 sources (3.2x over 8), armadillo 4.3x,
+// nefertiti 5.0x.
 void expect_bars(const Errors& e, const std::string& name, double factor) {
   EXPECT_LT(e.gsp, 0.02) << name;
   EXPECT_LT(e.gsp, e.dijkstra / factor) << name;
@@ -79,12 +79,12 @@ void expect_bars(const Errors& e, const std::string& name, double factor) {
 
 TEST(PointCloudAccuracy, FertilityVertices) {
   const std::string path = std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off";
-  expect_bars(measure(path, 3), "fertility", 2.0);
+  expect_bars(measure(path, 3), "fertility", 3.0);
 }
 
 TEST(PointCloudAccuracy, SharedBenignMeshes) {
   if (!have_shared_data()) GTEST_SKIP() << "shared meshes not found";
-  for (const char* name : {"armadillo_remeshed.obj", "nefertiti_lowres.obj"}) expect_bars(measure(shared_mesh(name), 1), name, 2.0);
+  for (const char* name : {"armadillo_remeshed.obj", "nefertiti_lowres.obj"}) expect_bars(measure(shared_mesh(name), 1), name, 3.0);
 }
 
 }  // namespace

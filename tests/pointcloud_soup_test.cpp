@@ -104,11 +104,16 @@ TEST(Soup, TinyGapsWeldedWithATolerance) {
   EXPECT_LT(d.max, 1e-3);
 }
 
-// Half the faces flipped: the core connects them (radial rings ignore orientation), every
-// vertex is reached and the mean stays close; but the per-vertex 0.1% bar is NOT met today
-// (measured: mean 0.19%, max 3.6%; without the intrinsic Delaunay flips mean 0.003%, max
-// 0.7%): inconsistent orientation changes which intrinsic flips the core makes. Reported to
-// the core's owner; the bounds below pin the current state so a regression shows.
+// Half the faces flipped: the core connects them (radial rings ignore orientation), and its
+// intrinsic Delaunay step winds the faces consistently before flipping (intrinsic_delaunay.hpp),
+// so the flips and the propagation see the original's triangles. Which of the two windings
+// is up to a tie-break: exactly half the faces are flipped here, and without positions the
+// step keeps the first face's winding, which may be the mirror image; GSP is not bit-for-bit
+// mirror-symmetric (fertility mirrored: max 0.9%, mean 0.03%). Measured: mean 2.1e-4, max
+// 8.4e-3 (before the winding step: mean 1.9e-3, max 3.6e-2). With the mesh positions handed
+// to the step (closed patches wound outwards, one line in the solver, not there yet) the
+// flipped soup matches the original to 3.7e-7 (max) on fertility, 1.5e-3 on armadillo.
+// Asserted: the 0.1% on the mean; the max pinned at what holds today.
 TEST(Soup, FlippedFacesStayClose) {
   const TriangleMesh m = fertility();
   const double diag = bbox_diagonal(m);
@@ -117,8 +122,8 @@ TEST(Soup, FlippedFacesStayClose) {
     const TriangleMesh soup = split_and_flip(m, jitter, true, soup_of);
     const Difference d = relative_difference(m, soup, soup_of, jitter > 0 ? 1e-5 * diag : 0.0);
     report(jitter > 0 ? "split, half flipped, 1e-7 gaps" : "split, half flipped", d);
-    EXPECT_LT(d.mean, 5e-3);
-    EXPECT_LT(d.max, 0.06);
+    EXPECT_LT(d.mean, 1e-3);
+    EXPECT_LT(d.max, 0.02);
   }
 }
 

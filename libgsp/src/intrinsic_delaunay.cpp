@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace gsp::detail {
 namespace {
@@ -15,7 +16,8 @@ double opposite_angle(double a, double b, double c) {
   return std::acos(std::clamp(cosine, -1.0, 1.0));
 }
 
-// The twin of h when its edge is flippable, else kInvalidIndex.
+// The twin of h when its edge is flippable, else kInvalidIndex. The twin may run the edge
+// either way (a soup's inconsistently wound neighbour): a flip needs lengths only.
 Index flippable_twin(const IntrinsicTriangulation& t, Index h) {
   const Index g = t.ring[h];
   if (g == h || t.ring[g] != h) return kInvalidIndex;   // boundary or non-manifold
@@ -23,10 +25,13 @@ Index flippable_twin(const IntrinsicTriangulation& t, Index h) {
   if (f1 == f2 || t.skipped[f1] || t.skipped[f2]) return kInvalidIndex;
   const Triangle& a = t.triangles[f1];
   const Triangle& b = t.triangles[f2];
-  // Consistent orientation: g runs the edge backwards.
-  if (a[corner_of(h)] != b[corner_of(next_halfedge(g))]) return kInvalidIndex;
   if (a[corner_of(prev_halfedge(h))] == b[corner_of(prev_halfedge(g))]) return kInvalidIndex;
   return g;
+}
+
+// Whether the twin g runs its edge the same way as h (the two faces are wound inconsistently).
+bool same_direction(const IntrinsicTriangulation& t, Index h, Index g) {
+  return t.triangles[face_of(h)][corner_of(h)] == t.triangles[face_of(g)][corner_of(g)];
 }
 
 bool is_delaunay(const IntrinsicTriangulation& t, Index h, Index g) {
@@ -36,9 +41,103 @@ bool is_delaunay(const IntrinsicTriangulation& t, Index h, Index g) {
   return ac + ad <= 3.14159265358979323846 * (1 + 1e-9);
 }
 
+// Whether a patch (faces with their winding relative to its first face) is to be wound the
+// other way round from its first face; see the header for the rule.
+bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& patch,
+                  const std::vector<std::int8_t>& reverse, std::size_t reversed) {
+  if (!t.positions) return 2 * reversed > patch.size();   // majority; a tie keeps the first face's
+  // 6 x signed volume of the patch as wound like its first face, about `origin`, and the sum
+  // of its tetrahedra's absolute values.
+  auto volume = [&](Vec3 origin, double* unsigned_sum) {
+    double v = 0;
+    for (Index f : patch) {
+      const Triangle& c = t.triangles[f];
+      const Vec3 a = (*t.positions)[c[0]] - origin, b = (*t.positions)[c[1]] - origin, d = (*t.positions)[c[2]] - origin;
+      const double x = dot(a, cross(b, d));
+      v += reverse[f] ? -x : x;
+      if (unsigned_sum) *unsigned_sum += std::abs(x);
+    }
+    return v;
+  };
+  bool closed = true;
+  for (Index f : patch)
+    for (Index i = 0; i < 3 && closed; ++i) {
+      const Index h = 3 * f + i, g = t.ring[h];
+      closed = g != h && t.ring[g] == h && !t.skipped[face_of(g)];
+    }
+  if (closed) {
+    const double v = volume(Vec3{0, 0, 0}, nullptr);
+    if (v != 0) return v < 0;
+  }
+  // Open: about the centroid, a surface with a few holes still encloses most of its volume
+  // one way; a sheet (|volume| small against its tetrahedra) leaves it to the majority.
+  Vec3 centre{0, 0, 0};
+  for (Index f : patch)
+    for (Index x : t.triangles[f]) centre = centre + (1.0 / (3.0 * double(patch.size()))) * (*t.positions)[x];
+  double tetrahedra = 0;
+  const double v = volume(centre, &tetrahedra);
+  if (std::abs(v) >= 0.25 * tetrahedra && v != 0) return v < 0;
+  if (2 * reversed != patch.size()) return 2 * reversed > patch.size();
+  return v < 0;
+}
+
 }  // namespace
 
+std::size_t orient_consistently(IntrinsicTriangulation& t) {
+  const Index nf = Index(t.triangles.size());
+  const Index nh = Index(t.length.size());
+  // Per face: reverse relative to its patch's first face; patches grown across two-face edges.
+  std::vector<std::int8_t> reverse(nf, -1);
+  std::vector<Index> patch, stack;
+  std::vector<bool> flip_face(nf, false);
+  std::size_t count = 0;
+  for (Index root = 0; root < nf; ++root) {
+    if (reverse[root] >= 0 || t.skipped[root]) continue;
+    patch.clear();
+    reverse[root] = 0;
+    stack.push_back(root);
+    std::size_t reversed = 0;
+    while (!stack.empty()) {
+      const Index f = stack.back();
+      stack.pop_back();
+      patch.push_back(f);
+      reversed += std::size_t(reverse[f]);
+      for (Index i = 0; i < 3; ++i) {
+        const Index h = 3 * f + i, g = t.ring[h];
+        if (g == h || t.ring[g] != h) continue;   // boundary or non-manifold: not a patch link
+        const Index n = face_of(g);
+        if (n == f || t.skipped[n] || reverse[n] >= 0) continue;   // first visit decides (a Moebius
+        reverse[n] = std::int8_t(reverse[f] ^ int(same_direction(t, h, g)));   // strip keeps one seam)
+        stack.push_back(n);
+      }
+    }
+    const bool invert = invert_patch(t, patch, reverse, reversed);
+    for (Index f : patch)
+      if (bool(reverse[f]) != invert) flip_face[f] = true, ++count;
+  }
+  if (count > 0) {
+    // (a, b, c) -> (a, c, b): halfedge slots 0 and 2 trade places, slot 1 keeps its edge.
+    auto moved = [&](Index h) {
+      if (!flip_face[face_of(h)] || corner_of(h) == 1) return h;
+      return corner_of(h) == 0 ? h + 2 : h - 2;
+    };
+    std::vector<double> length(nh);
+    std::vector<Index> ring(nh);
+    for (Index h = 0; h < nh; ++h) {
+      length[moved(h)] = t.length[h];
+      ring[moved(h)] = moved(t.ring[h]);
+    }
+    t.length = std::move(length);
+    t.ring = std::move(ring);
+    for (Index f = 0; f < nf; ++f)
+      if (flip_face[f]) std::swap(t.triangles[f][1], t.triangles[f][2]);
+  }
+  t.reoriented = count;
+  return count;
+}
+
 std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
+  orient_consistently(t);
   const Index nh = Index(t.length.size());
   std::vector<Index> stack;
   std::vector<char> queued(nh, 0);
@@ -55,8 +154,12 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
     const Index hn = next_halfedge(h), hp = prev_halfedge(h), gn = next_halfedge(g), gp = prev_halfedge(g);
     const Index a = t.triangles[f1][corner_of(h)], b = t.triangles[f1][corner_of(hn)];
     const Index c = t.triangles[f1][corner_of(hp)], d = t.triangles[f2][corner_of(gp)];
+    // f2 wound like f1: g = b->a, gn = a->d, gp = d->b; wound the other way: g = a->b,
+    // gn = b->d, gp = d->a.
+    const bool reversed = same_direction(t, h, g);
+    const Index ad = reversed ? gp : gn, db = reversed ? gn : gp;
     const double lab = t.length[h], lbc = t.length[hn], lca = t.length[hp];
-    const double lad = t.length[gn], ldb = t.length[gp];
+    const double lad = t.length[ad], ldb = t.length[db];
     // Unfold: a = (0, 0), b = (lab, 0), c above, d below; the new diagonal is |cd|.
     const double cx = (lab * lab + lca * lca - lbc * lbc) / (2 * lab);
     const double cy = std::sqrt(std::max(0.0, lca * lca - cx * cx));
@@ -64,8 +167,8 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
     const double dy = -std::sqrt(std::max(0.0, lad * lad - dx * dx));
     const double lcd = std::hypot(cx - dx, cy - dy);
     if (!(lcd > 0) || !std::isfinite(lcd)) continue;
-    // Outer halfedges and where they go: f1' = (c, a, d), f2' = (d, b, c).
-    const Index outer_old[4] = {hp, gn, gp, hn};   // c->a, a->d, d->b, b->c
+    // Outer halfedges and where they go: f1' = (c, a, d), f2' = (d, b, c), both wound like f1.
+    const Index outer_old[4] = {hp, ad, db, hn};   // edges c-a, a-d, d-b, b-c
     const Index base1 = 3 * f1, base2 = 3 * f2;
     const Index outer_new[4] = {base1 + 0, base1 + 1, base2 + 0, base2 + 1};
     const double outer_len[4] = {lca, lad, ldb, lbc};

@@ -3,8 +3,19 @@
 // two triangles are unfolded into the plane and the other diagonal measured), until every
 // flippable edge is Delaunay. Slivers and fans become well-shaped triangles on the same
 // surface with the same vertices, so one virtual source per face fits them far better.
+//
+// Orientation plays no part: soups wind their faces either way, and a flip only needs the
+// six lengths of the two triangles. Before flipping, the faces are wound consistently across
+// every two-face edge, so a soup with flipped faces yields the same intrinsic triangulation —
+// and the same propagation — as the consistently wound mesh (tests/pointcloud_soup_test.cpp).
+// Which of a patch's two windings: lengths cannot tell (the metric is mirror-symmetric), yet
+// GSP's float rounding and near-tie decisions are not, so the choice shows in the distances
+// (fertility mirrored: up to 0.9% apart). With positions, a closed patch is wound outwards
+// (positive signed volume, how benign meshes come); otherwise the winding most of its input
+// faces have; on a tie, the signed volume about the patch's centroid, then its first face's.
 #include <gsp/types.hpp>
 
+#include <cstddef>
 #include <vector>
 
 namespace gsp::detail {
@@ -14,10 +25,16 @@ struct IntrinsicTriangulation {
   std::vector<double> length;        // per halfedge 3f+i: |corner i -> corner i+1|
   std::vector<Index> ring;           // per halfedge: next halfedge on its edge (plain index)
   std::vector<bool> skipped;         // faces left out of the propagation
+  const std::vector<Vec3>* positions = nullptr;   // optional: picks each patch's winding (above)
+  std::size_t reoriented = 0;        // out: faces whose winding make_intrinsic_delaunay reversed
 };
 
-// Flips in place; returns the number of flips. Only edges with exactly two consistently
-// oriented, non-skipped faces and two distinct opposite vertices are flipped.
+// Winds the faces consistently (see above; reversing keeps corner 0: (a, b, c) -> (a, c, b)),
+// then flips in place; returns the number of flips. Only edges with exactly two non-skipped
+// faces and two distinct opposite vertices are flipped, whatever the faces' winding.
 std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips);
+
+// The winding step alone; returns the number of faces reversed (also in t.reoriented).
+std::size_t orient_consistently(IntrinsicTriangulation& t);
 
 }  // namespace gsp::detail

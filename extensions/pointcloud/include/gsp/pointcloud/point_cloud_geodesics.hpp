@@ -60,6 +60,17 @@ struct PointGeodesicOptions {
   // Smaller values bend more (over-estimate), larger ones cut more (under-estimate).
   double visibility_angle_deg = 10.0;
   double hinge_area = std::numeric_limits<double>::infinity();   // off by default
+  // Links as arcs: a link of chord L whose directions in the two tangent planes turn by
+  // theta is unfolded with the length of the circular arc tangent to both planes,
+  // L (theta/2) / sin(theta/2). Chords cut below a curved surface: summed over a path they
+  // under-estimate its length by the surface's normal curvature squared (docs/pointcloud.md).
+  bool curved_links = true;
+  // Steep links: where |n . (q - p)| > steep_link_slope |q - p| at either end, the link leaves
+  // the tangent plane; on sampled surfaces such links jump across thin gaps (between a
+  // handle and the body, two lips, a fold). GSP does not propagate over them, except into
+  // points that no other link reaches (so every point of a reached graph component is still
+  // reached). 1 or more: every link is used.
+  double steep_link_slope = 0.8;
   PositionSeeding seeding = PositionSeeding::neighbours;
   bool want_virtual_sources = false;
 };
@@ -92,6 +103,7 @@ struct PointPropagationStats {
   std::uint64_t update_steps = 0;   // candidate evaluations (one per link tried)
   std::uint64_t updates = 0;        // accepted (a point got a shorter distance)
   std::uint64_t bends = 0;          // accepted updates that created a new virtual source
+  std::uint64_t steep_links_used = 0;   // points reached only over steep links (see options)
   std::uint64_t enqueued = 0;
   std::uint64_t stale_skipped = 0;
   std::uint64_t iterations = 0;     // speed-limiter rounds (heap pops for Dijkstra)
