@@ -5,4 +5,6 @@ if(TARGET gsp-bench)
   add_dependencies(bench_app_test gsp-bench)   # the test runs the binary
   gsp_test(bench_errors_test SOURCES bench_errors_test.cpp DEPS gsp::reference gsp::core gsp::io)
   add_dependencies(bench_errors_test gsp-bench)
+  gsp_test(bench_points_test SOURCES bench_points_test.cpp DEPS gsp::io)
+  add_dependencies(bench_points_test gsp-bench)
 endif()

@@ -101,7 +101,7 @@ MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std:
   try {
     const std::size_t heap0 = heap_in_use();
     const Stopwatch watch;
-    std::unique_ptr<Runner> runner = make_runner(info.id, mesh.mesh, config.seed);
+    std::unique_ptr<Runner> runner = make_runner(info.id, mesh.mesh, config.seed, config.neighbours);
     r.precompute_s = config.cpu_clock ? watch.cpu() : watch.wall();
     r.state_bytes = runner->state_bytes();
     r.intrinsic_flips = runner->intrinsic_flips();

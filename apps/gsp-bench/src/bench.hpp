@@ -56,6 +56,7 @@ struct BenchConfig {
   int repetitions = 5;
   bool cpu_clock = false;                // time by thread CPU time instead of wall time
   std::uint64_t seed = 1;
+  unsigned neighbours = 10;              // k of the point-cloud methods' graph
   const train::ExactCache* cache = nullptr;
 };
 

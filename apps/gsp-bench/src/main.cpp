@@ -51,6 +51,8 @@ cli::Json settings_json(const Options& o, const Settings& s) {
   j["seed"] = o.seed;
   j["repetitions"] = o.repetitions;
   j["clock"] = o.clock;
+  j["domain"] = o.domain;
+  j["neighbours"] = o.neighbours;
   j["warm_up_runs"] = 1;
   j["shard"] = std::to_string(s.shard.index) + "/" + std::to_string(s.shard.count);
   j["cache"] = o.cache.empty() ? cli::Json() : cli::Json(o.cache);
@@ -91,6 +93,7 @@ void run(cli::Context& ctx, const Options& o) {
   config.repetitions = o.repetitions;
   config.cpu_clock = o.clock == "cpu";
   config.seed = o.seed;
+  config.neighbours = o.neighbours;
   config.cache = &cache;
 
   const auto progress = ctx.progress("benchmarking");

@@ -3,6 +3,7 @@
 #include <gsp/cli/app.hpp>
 #include <gsp/dijkstra.hpp>
 #include <gsp/layout.hpp>
+#include <gsp/pointcloud/point_cloud_geodesics.hpp>
 #include <gsp/reference/exact_geodesics.hpp>
 #include <gsp/reference/heat_method.hpp>
 
@@ -25,6 +26,8 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::heat, "heat", "CGAL heat method on the input triangles", true},
       {Method::heat_idt, "heat-idt", "CGAL heat method on an intrinsic Delaunay retriangulation", true},
       {Method::exact, "exact", "CGAL exact geodesics (Xin-Wang), the reference", true},
+      {Method::points_gsp, "points-gsp", "point-cloud GSP on the mesh's vertices (k-NN graph, normals by PCA)", false},
+      {Method::points_dijkstra, "points-dijkstra", "Dijkstra on the same k-NN graph of the mesh's vertices", false},
   };
   return methods;
 }
@@ -50,6 +53,8 @@ const MethodInfo& method_info(Method id) {
 
 bool is_gsp(Method id) { return id <= Method::gsp_input_faces; }
 bool uses_cgal(Method id) { return id == Method::heat || id == Method::heat_idt || id == Method::exact; }
+bool is_points(Method id) { return id == Method::points_gsp || id == Method::points_dijkstra; }
+std::string points_method_list() { return "points-gsp,points-dijkstra,gsp,exact"; }
 
 std::vector<MethodInfo> parse_methods(const std::string& list) {
   std::vector<MethodInfo> out;
@@ -145,9 +150,32 @@ class ExactRunner : public Runner {
   reference::ExactGeodesicSolver solver_;
 };
 
+// The mesh's vertices as a bare point cloud: positions only (a scan without normals), so
+// the tangent frames come from local PCA. The k-d tree, graph and frames are the precompute.
+class PointCloudRunner : public Runner {
+ public:
+  PointCloudRunner(const TriangleMesh& mesh, unsigned neighbours, pointcloud::PointMethod method)
+      : solver_(mesh.positions, {}, cloud_options(neighbours)) {
+    options_.method = method;
+  }
+  Outcome run(Index source) override {
+    pointcloud::PointCloudResult r = solver_.compute({pointcloud::PointSource::at_point(source)}, options_);
+    return {std::move(r.distance), {}, false};
+  }
+
+ private:
+  static pointcloud::PointCloudOptions cloud_options(unsigned neighbours) {
+    pointcloud::PointCloudOptions o;
+    o.neighbours.k = neighbours;
+    return o;
+  }
+  pointcloud::PointCloudGeodesics solver_;
+  pointcloud::PointGeodesicOptions options_;
+};
+
 }  // namespace
 
-std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed) {
+std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed, unsigned neighbours) {
   SolverOptions so;
   GeodesicOptions go;
   switch (method) {
@@ -163,6 +191,9 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::heat: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::direct);
     case Method::heat_idt: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::intrinsic_delaunay);
     case Method::exact: return std::make_unique<ExactRunner>(mesh);
+    case Method::points_gsp: return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::gsp);
+    case Method::points_dijkstra:
+      return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::dijkstra);
   }
   return std::make_unique<GspRunner>(mesh, so, go);
 }

@@ -26,6 +26,8 @@ enum class Method {
   heat,                // CGAL heat method on the input triangles
   heat_idt,            // CGAL heat method on an intrinsic Delaunay retriangulation
   exact,               // CGAL exact geodesics (the reference)
+  points_gsp,          // point-cloud GSP on the mesh's vertices (gsp::pointcloud, k-NN graph)
+  points_dijkstra,     // Dijkstra on the same k-NN graph (the point-cloud baseline)
 };
 
 struct MethodInfo {
@@ -41,6 +43,11 @@ std::string method_names();          // every name, for --help
 const MethodInfo& method_info(Method id);
 bool is_gsp(Method id);
 bool uses_cgal(Method id);           // refused on meshes CGAL cannot take
+bool is_points(Method id);           // runs on the mesh's vertices as a point cloud
+
+// The methods of --domain points: both point-cloud methods, mesh GSP (for the time ratio) and
+// the exact reference.
+std::string points_method_list();
 
 // "gsp,dijkstra" -> the methods in the order given; duplicates dropped. UsageError for
 // unknown names or an empty list.
@@ -64,8 +71,10 @@ class Runner {
   virtual std::size_t intrinsic_flips() const { return 0; }
 };
 
-// Prepares `method` on `mesh` (the precompute step). `seed` shuffles the random layout.
+// Prepares `method` on `mesh` (the precompute step). `seed` shuffles the random layout;
+// `neighbours` is k of the point-cloud methods' k-NN graph.
 // Throws gsp::TopologyError / gsp::InvalidInput / gsp::Error where the method refuses the mesh.
-std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed);
+std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed,
+                                    unsigned neighbours = 10);
 
 }  // namespace gsp::bench

@@ -25,12 +25,20 @@ void add_options(CLI::App& app, Options& o) {
                  "what a query's time is: wall (default) or cpu (thread CPU time, for busy shared machines)")
       ->check(CLI::IsMember({"wall", "cpu"}));
   app.add_flag("--no-table", o.no_table, "print no table on stdout");
+  app.add_option("--domain", o.domain,
+                 "mesh (default) or points: the mesh's vertices as a point cloud; --methods then defaults to " +
+                     points_method_list())
+      ->check(CLI::IsMember({"mesh", "points"}));
+  app.add_option("--neighbours", o.neighbours, "k of the point-cloud methods' k-nearest-neighbour graph (default 10)")
+      ->check(CLI::Range(1u, 1000u));
   cli::add_load_options(app, o.load);
 }
 
 Settings check_options(const Options& o, bool stats_to_stdout) {
   Settings s;
-  s.methods = parse_methods(o.methods);
+  // --domain points changes the default list only; an explicit --methods is taken as given.
+  const bool default_list = o.methods == default_method_list();
+  s.methods = parse_methods(o.domain == "points" && default_list ? points_method_list() : o.methods);
   s.shard = parse_shard(o.shard);
   const int on_stdout = int(o.json == "-") + int(o.csv == "-") + int(stats_to_stdout);
   if (on_stdout > 1) throw cli::UsageError("only one of --json, --csv and --stats can be - (stdout)");

@@ -26,6 +26,8 @@ struct Options {
   std::string shard = "0/1";
   std::string clock = "wall";      // wall | cpu
   bool no_table = false;
+  std::string domain = "mesh";     // mesh | points: what --methods defaults to
+  unsigned neighbours = 10;        // k of the point-cloud methods' k-NN graph
   cli::LoadOptions load;
 };
 

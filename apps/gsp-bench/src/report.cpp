@@ -142,6 +142,11 @@ cli::Json to_json(const Report& report) {
       j["vs_heat_idt"] = number_or_null(s.vs_heat_idt);
       j["vs_gsp"] = number_or_null(s.vs_gsp);
       if (is_gsp(m.method.id) && m.ok()) j["intrinsic_flips"] = m.intrinsic_flips;
+      if (m.method.id == Method::points_gsp) {
+        // The bar: point-cloud GSP's MRE against Dijkstra's on the same k-NN graph.
+        const MethodRun* d = find(run, Method::points_dijkstra);
+        j["points_dijkstra_mre_ratio"] = number_or_null(d ? summarise(run, *d).mre / s.mre : kNaN);
+      }
       cli::Json& per = j["per_source"] = cli::Json::array();
       for (const SourceRun& r : m.sources) {
         cli::Json sj;

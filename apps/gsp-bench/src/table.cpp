@@ -36,6 +36,31 @@ double time_of(const MeshRun& run, Method id) {
   return std::nan("");
 }
 
+double mre_of(const MeshRun& run, Method id) {
+  for (const MethodRun& m : run.methods)
+    if (m.method.id == id && m.ok()) return summarise(run, m).mre;
+  return std::nan("");
+}
+
+// --domain points: the figures per mesh: the MRE of point-cloud GSP and of Dijkstra on
+// the same k-NN graph against the mesh's exact geodesics, their ratio, and point-cloud GSP's
+// query time over mesh GSP's.
+std::string points_section(const Report& report) {
+  bool any = false;
+  for (const MeshRun& run : report.runs)
+    for (const MethodRun& m : run.methods) any = any || (is_points(m.method.id) && m.ok());
+  if (!any) return "";
+  std::string out = "point clouds (the mesh's vertices, k-NN graph)\n";
+  appendf(out, "  %-28s %12s %12s %16s %16s\n", "mesh", "MRE gsp", "MRE dijkstra", "dijkstra / gsp", "time / mesh gsp");
+  for (const MeshRun& run : report.runs) {
+    const double g = mre_of(run, Method::points_gsp), d = mre_of(run, Method::points_dijkstra);
+    appendf(out, "  %-28s", run.mesh->name.c_str());
+    out += " " + cell(100 * g, 11, "%.3f") + "%" + " " + cell(100 * d, 11, "%.3f") + "%" + " " + cell(d / g, 16, "%.2f") +
+           " " + cell(time_of(run, Method::points_gsp) / time_of(run, Method::gsp), 16, "%.2f") + "\n";
+  }
+  return out + "\n";
+}
+
 struct GeoMean {
   double log_sum = 0;
   int n = 0;
@@ -87,6 +112,7 @@ std::string format_table(const Report& report) {
                   {"gsp / heat-idt solve", Method::gsp, Method::heat_idt, {}},
                   {"random layout / gsp", Method::gsp_random_layout, Method::gsp, {}},
                   {"no layout / gsp", Method::gsp_no_layout, Method::gsp, {}}};
+  out += points_section(report);
   bool any = false;
   for (const Pair& p : pairs)
     for (const MeshRun& run : report.runs)
