@@ -133,7 +133,9 @@ TEST(PathTrace, UnreachedEndAndBadInput) {
   EXPECT_THROW(tracer.trace(no_sources, Endpoint::at_vertex(1)), InvalidInput);
 }
 
-// A field that cycles (two faces pointing at each other) ends in a clear error, not a hang.
+// A field whose virtual sources cycle (two faces pointing at each other): the walk gives up
+// after max_steps and the route down the (intact) vertex distances is the path; with the
+// vertex distances broken too, a clear error, not a hang.
 TEST(PathTrace, InconsistentFieldFailsClearly) {
   const TriangleMesh m = quad();
   GeodesicResult field = field_from(m, Source::at_vertex(0));
@@ -144,7 +146,12 @@ TEST(PathTrace, InconsistentFieldFailsClearly) {
   field.face_sources[1].sigma = 1;
   pathfinding::TraceOptions o;
   o.max_steps = 50;
-  EXPECT_THROW(PathTracer(m, o).trace(field, Endpoint::in_face(0, {0.2, 0.4, 0.4})), Error);
+  const Endpoint end = Endpoint::in_face(0, {0.2, 0.4, 0.4});
+  const auto path = PathTracer(m, o).trace(field, end);
+  expect_valid_path(m, path);
+  EXPECT_NEAR(path.length, distance(m.positions[0], pathfinding::endpoint_position(m, end)), 1e-12);
+  for (double& d : field.vertex_distance) d = 1;   // no vertex is a source any more
+  EXPECT_THROW(PathTracer(m, o).trace(field, end), Error);
 }
 
 // One field, many ends: every path from the same source, each consistent with the field.

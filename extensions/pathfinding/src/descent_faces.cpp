@@ -1,4 +1,5 @@
 #include "descent_faces.hpp"
+#include "sleeve.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,13 +24,11 @@ Index edge_face(const TriangleMesh& mesh, const Connectivity& conn, Index u, Ind
   return any;
 }
 
-}  // namespace
 
-std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
-                                 const PathPoint& start, const PathPoint& end) {
-  if (d.size() != mesh.num_vertices() || start.face >= mesh.num_faces() || end.face >= mesh.num_faces()) return {};
-  const Triangle& ts = mesh.triangles[start.face];
-  // The end's nearest corner (by field distance plus the straight step to it).
+// The vertex chain from the end's best corner down the field, stopping at a vertex of
+// `stop_face` (or, with kInvalidIndex, where no neighbour is lower); empty when stuck.
+std::vector<Index> descend(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
+                           const PathPoint& end, Index stop_face) {
   const Triangle& te = mesh.triangles[end.face];
   Index u = kInvalidIndex;
   double best = std::numeric_limits<double>::infinity();
@@ -37,7 +36,7 @@ std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& c
     if (d[v] + distance(mesh.positions[v], end.position) < best) best = d[v] + distance(mesh.positions[v], end.position), u = v;
   if (u == kInvalidIndex) return {};
   std::vector<Index> chain{u};   // vertices from the end towards the source
-  for (std::size_t steps = 0; !has(ts, u); ++steps) {
+  for (std::size_t steps = 0; stop_face == kInvalidIndex || !has(mesh.triangles[stop_face], u); ++steps) {
     if (steps > mesh.num_vertices()) return {};
     Index next = kInvalidIndex;
     double key = std::numeric_limits<double>::infinity();
@@ -45,19 +44,91 @@ std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& c
       for (Index w : mesh.triangles[face_of(conn.vertex_corners[k])])
         if (w != u && d[w] < d[u] && d[w] + distance(mesh.positions[w], mesh.positions[u]) < key)
           key = d[w] + distance(mesh.positions[w], mesh.positions[u]), next = w;
-    if (next == kInvalidIndex) return {};
+    if (next == kInvalidIndex) {
+      if (stop_face == kInvalidIndex) break;   // the bottom
+      return {};
+    }
     chain.push_back(u = next);
   }
-  // Faces from the source end: the start's face, one per edge step, the end's face.
   std::reverse(chain.begin(), chain.end());
-  std::vector<Index> faces{start.face};
+  return chain;
+}
+
+// Faces from the source end: the start's face, one per edge step, the end's face.
+std::vector<Index> chain_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<Index>& chain,
+                               Index start_face, Index end_face) {
+  std::vector<Index> faces{start_face};
   for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
     const Index f = edge_face(mesh, conn, chain[i], chain[i + 1], i + 2 < chain.size() ? chain[i + 2] : kInvalidIndex);
     if (f == kInvalidIndex) return {};
     faces.push_back(f);
   }
-  faces.push_back(end.face);
+  faces.push_back(end_face);
   return faces;
+}
+
+}  // namespace
+
+std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
+                                 const PathPoint& start, const PathPoint& end) {
+  if (d.size() != mesh.num_vertices() || start.face >= mesh.num_faces() || end.face >= mesh.num_faces()) return {};
+  const std::vector<Index> chain = descend(mesh, conn, d, end, start.face);
+  return chain.empty() ? chain : chain_faces(mesh, conn, chain, start.face, end.face);
+}
+
+bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
+                  const PathPoint& end, GeodesicPath& out) {
+  const std::vector<double>& d = field.vertex_distance;
+  if (d.size() != mesh.num_vertices() || end.face >= mesh.num_faces()) return false;
+  const std::vector<Index> chain = descend(mesh, conn, d, end, kInvalidIndex);
+  if (chain.empty()) return false;
+  const Index u = chain.front();
+  // The source near the bottom: a face round u whose virtual source lies in it at sigma about
+  // 0 (a point source in a face), else u itself (a vertex source).
+  PathPoint start;
+  bool found_face_source = false;
+  double scale = 0;
+  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
+    const Index c = conn.vertex_corners[k];
+    const Index f = face_of(c);
+    const Triangle& t = mesh.triangles[f];
+    scale = std::max(scale, distance(mesh.positions[t[0]], mesh.positions[t[1]]));
+    if (start.face == kInvalidIndex) {
+      start.face = f;
+      start.barycentric = {0, 0, 0};
+      start.barycentric[corner_of(c)] = 1;
+      start.position = mesh.positions[u];
+    }
+  }
+  if (start.face == kInvalidIndex) return false;
+  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
+    const Index f = face_of(conn.vertex_corners[k]);
+    if (f >= field.face_sources.size() || !field.face_sources[f].reached()) continue;
+    const VirtualSource& vs = field.face_sources[f];
+    if (vs.sigma > 1e-9 * (1 + d[u])) continue;
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = vs.position - a;
+    const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+    const double den = d00 * d11 - d01 * d01;
+    if (!(den > 0)) continue;
+    const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den, b0 = 1 - b1 - b2;
+    if (std::min({b0, b1, b2}) < -1e-6 || distance(vs.position, mesh.positions[u]) <= 1e-9 * (1 + scale)) continue;
+    start.face = f;
+    start.barycentric = {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)};
+    start.position = vs.position;
+    found_face_source = true;
+    break;
+  }
+  // Neither a point source in a face round u nor a source at u (distance 0 there): the field
+  // bottoms out somewhere else than at a source, and this route cannot be trusted (a vertex
+  // source with an initial offset lands here too: the walk handles those).
+  if (!found_face_source && !(d[u] <= 0)) return false;
+  const std::vector<Index> faces = chain_faces(mesh, conn, chain, start.face, end.face);
+  if (faces.empty() || !shorten_in_sleeve(mesh, conn, start, end, faces, out.points)) return false;
+  out.length = polyline_length(out.points);
+  out.source = field.face_sources.size() > start.face ? field.face_sources[start.face].source : kInvalidIndex;
+  if (out.source == kInvalidIndex && u < field.vertex_source.size()) out.source = field.vertex_source[u];
+  return true;
 }
 
 }  // namespace gsp::pathfinding::detail

@@ -4,8 +4,10 @@
 // follows the field without reading the virtual sources; the sleeve shortening (sleeve.hpp)
 // pulls it taut. Where the walk through the virtual sources strays into a longer corridor
 // (an inconsistent source near a saddle), this route usually does not, and the tracer keeps
-// the shorter of the two taut paths.
+// the shorter of the two taut paths; where the walk fails outright (a cycle in an inconsistent
+// field, a step off the boundary) it is the path.
 #include <gsp/connectivity.hpp>
+#include <gsp/geodesics.hpp>
 #include <gsp/pathfinding/path.hpp>
 
 #include <vector>
@@ -17,5 +19,11 @@ namespace gsp::pathfinding::detail {
 // the start's face) or `distance` does not cover the mesh.
 std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& distance,
                                  const PathPoint& start, const PathPoint& end);
+
+// The whole path by descent alone: down to the vertex where the field bottoms out, where the
+// source is found (a face whose virtual source lies in it with sigma about 0, else the vertex
+// itself), then pulled taut. False when the descent or the shortening fails.
+bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
+                  const PathPoint& end, GeodesicPath& out);
 
 }  // namespace gsp::pathfinding::detail

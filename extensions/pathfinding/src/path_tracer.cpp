@@ -667,8 +667,29 @@ GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end)
   if (field.face_sources.size() != mesh_.num_faces())
     throw InvalidInput("path tracing needs a field computed with want_face_sources on this mesh");
   endpoint_position(mesh_, end);   // validates
-  const std::size_t max_steps = options_.max_steps ? options_.max_steps : 8 * mesh_.num_faces() + 64;
-  return Walk(mesh_, conn_, field, mean_edge_, max_steps).run(end);
+  const std::size_t max_steps = options_.max_steps ? options_.max_steps : 2 * mesh_.num_faces() + 64;
+  try {
+    return Walk(mesh_, conn_, field, mean_edge_, max_steps).run(end);
+  } catch (const NoPath&) {
+    throw;
+  } catch (const Error&) {
+    // The walk could not be completed (a cycle in an inconsistent field, a step off the
+    // boundary): the route down the field's vertex distances, pulled taut, is the path.
+    PathPoint last;
+    last.position = endpoint_position(mesh_, end);
+    if (end.is_vertex()) {
+      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[end.vertex]];
+      last.face = face_of(c);
+      last.barycentric = {0, 0, 0};
+      last.barycentric[corner_of(c)] = 1;
+    } else {
+      last.face = end.face, last.barycentric = end.barycentric;
+    }
+    GeodesicPath path;
+    if (!detail::descent_path(mesh_, conn_, field, last, path)) throw;
+    path.field_distance = end.is_vertex() ? field.vertex_distance[end.vertex] : field.distance_at(mesh_, end.face, end.barycentric);
+    return path;
+  }
 }
 
 std::vector<GeodesicPath> PathTracer::trace_all(const GeodesicResult& field, const std::vector<Endpoint>& ends) const {

@@ -24,8 +24,9 @@
 namespace gsp::pathfinding {
 
 struct TraceOptions {
-  // Walk steps (face crossings and turns) before giving up; 0: 8 * faces + 64. Guards against
-  // cycles in an inconsistent field.
+  // Walk steps (face crossings and turns) before giving up; 0: 2 * faces + 64. Guards against
+  // cycles in an inconsistent field; a walk that gives up falls back to the route down the
+  // field's vertex distances.
   std::size_t max_steps = 0;
 };
 
@@ -35,8 +36,9 @@ class PathTracer {
   explicit PathTracer(const TriangleMesh& mesh, const TraceOptions& options = {});
 
   // The path from the field's nearest source to `end`. Throws InvalidInput when the field has
-  // no face sources or `end` is malformed, NoPath when `end` is not reached, gsp::Error when the
-  // walk cannot be completed (a cycle, max_steps exceeded, a walk off the boundary).
+  // no face sources or `end` is malformed, NoPath when `end` is not reached, gsp::Error when
+  // neither the walk (a cycle, max_steps exceeded, a walk off the boundary) nor the descent
+  // route can be completed.
   GeodesicPath trace(const GeodesicResult& field, const Endpoint& end) const;
 
   // One field, many end points (one source to many targets). An end point the field does not
