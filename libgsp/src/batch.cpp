@@ -6,12 +6,23 @@
 #include <mutex>
 #include <thread>
 
+#include "parallel_propagation.hpp"
+
 namespace gsp {
 
 unsigned resolve_threads(unsigned threads, std::size_t jobs) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, jobs)));
 }
+
+namespace detail {
+
+bool& inside_parallel_region() {
+  thread_local bool flag = false;
+  return flag;
+}
+
+}  // namespace detail
 
 namespace {
 
@@ -22,6 +33,14 @@ void parallel_for(std::size_t n, unsigned threads, const Job& job) {
   std::exception_ptr failure;
   std::mutex failure_mutex;
   auto worker = [&] {
+    // Queries run here are already spread over the cores: an automatic thread count inside
+    // them means one (detail::inside_parallel_region).
+    const bool outer = detail::inside_parallel_region();
+    detail::inside_parallel_region() = threads > 1 || outer;
+    struct Restore {
+      bool value;
+      ~Restore() { detail::inside_parallel_region() = value; }
+    } restore{outer};
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       try {
         job(i);

@@ -32,7 +32,18 @@ struct QueueEntry {
   Real dT;
 };
 
+// An update step for a face owned by another thread: everything the owner needs to run it.
 template <class Real>
+struct RemoteStep {
+  Index g, link;
+  Real hx, hy, e1h, sigma;
+  Index source;
+  bool h_dir;
+};
+
+// Partitioned: a parallel run's step, owning a block of faces (partition()); the sequential
+// step compiles without the ownership test.
+template <class Real, bool Partitioned = false>
 class UpdateStep {
  public:
   UpdateStep(FaceRecord<Real>* faces, const Index* ring, const ProbeTable<Real>& probe, Real expand_limit,
@@ -68,77 +79,104 @@ class UpdateStep {
     const bool h_dir = (link & kRingSelfDir) != 0;
     for (Index g = link & kRingIndexMask; g != h; link = ring_[g], g = link & kRingIndexMask) {
       ++steps;
-      FaceRecord<Real>& t = faces_[face_of(g)];
-      const Index cj = corner_of(g);
-      const EdgeView<Real> v = edge_view(t.len, cj);
-      const Real e1 = v.e1;
-      // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
-      // two faces disagree in orientation and walk the edge the same way.
-      const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
-      const Real sx = same_dir ? hx : e1h - hx;
-      const Real sy = -hy;   // <= 0: the source lies on U's side, as it should
-      const Real cx = (v.px + e1) * Real(1.0 / 3.0);
-      const Real cy = v.py * Real(1.0 / 3.0);
-
-      int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
-      if (sy <= 0) {
-        // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
-        // (lambda 1); a zero-length edge is seen through its single point.
-        Real qx = -1, qy = 0;
-        if (e1 > 0) {
-          const Real lambda = probe_.blend(t.len, e1, v.py);
-          qx = v.px + lambda * (cx - v.px);
-          qy = v.py + lambda * (cy - v.py);
+      // A face another thread owns gets the step as a message (parallel runs only).
+      if constexpr (Partitioned) {
+        if (face_of(g) < own_begin_ || face_of(g) >= own_end_) {
+          (*outbox_)[face_of(g) / own_chunk_].push_back({g, link, hx, hy, e1h, sigma, source, h_dir});
+          continue;
         }
-        // Does the segment Q -> S cross AB? Division-free form of the paper's
-        // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
-        const Real tq = qx * -sy + sx * qy;
-        kind = tq < 0 ? 1 : (tq > e1 * (qy - sy) ? 2 : 0);
-        // Around a flat vertex every unfolding agrees and no geodesic turns: the probe's verdict
-        // only matters where the vertex could be a corner.
-        if (kind != 0 && t.flat_corner(kind == 1 ? cj : (cj == 2 ? 0 : cj + 1))) kind = 0;
-      } else {
-        // The source lies on T's side of the edge (the paper's same-side case): no straight
-        // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
-        // (Even at a flat vertex: carrying the source on would let it circle round a vertex
-        // and pick up rounding drift; the face gets the straight path through another edge.)
-        const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
-        const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) +
-                        std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-        kind = l1 <= l2 ? 1 : 2;
       }
-
-      Real new_sigma, new_dT, ex, ey;   // ex, ey: the new source in g's edge frame
-      if (kind == 0) {
-        new_sigma = sigma;
-        new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
-        ex = sx, ey = sy;
-      } else if (kind == 1) {
-        new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
-        new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
-        ex = 0, ey = 0;
-      } else {
-        new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-        new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
-        ex = e1, ey = 0;
-      }
-
-      // Only a clearly shorter path counts: an improvement lost in rounding would bounce
-      // between faces forever.
-      if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) continue;
-      ++stats_.face_updates;
-      if (reached_ && t.dT == std::numeric_limits<Real>::infinity()) reached_->push_back(face_of(g));
-      canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
-      t.sigma = new_sigma;
-      t.dT = new_dT;
-      t.tag = (t.tag & ~kSourceMask) | source;
-      // Max-distance: a face none of whose points can be within the limit is stored, not
-      // expanded (its centroid is farther than the limit by more than its own radius).
-      if (!(new_dT <= limit_) && !(new_dT - centroid_radius(t.len) <= limit_)) continue;
-      push(QueueEntry<Real>{next_halfedge(g), new_dT});
-      push(QueueEntry<Real>{prev_halfedge(g), new_dT});
+      try_update(g, link, h_dir, hx, hy, e1h, sigma, source, push);
     }
     stats_.update_steps += steps;
+  }
+
+  // One update step: the source (hx, hy in the sending halfedge's edge frame, e1h that edge's
+  // length, sigma, label) unfolded over ring link `link` into the face of halfedge g.
+  template <class Push>
+  void try_update(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source, Push&& push) {
+    FaceRecord<Real>& t = faces_[face_of(g)];
+    const Index cj = corner_of(g);
+    const EdgeView<Real> v = edge_view(t.len, cj);
+    const Real e1 = v.e1;
+    // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
+    // two faces disagree in orientation and walk the edge the same way.
+    const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
+    const Real sx = same_dir ? hx : e1h - hx;
+    const Real sy = -hy;   // <= 0: the source lies on U's side, as it should
+    const Real cx = (v.px + e1) * Real(1.0 / 3.0);
+    const Real cy = v.py * Real(1.0 / 3.0);
+
+    int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
+    if (sy <= 0) {
+      // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
+      // (lambda 1); a zero-length edge is seen through its single point.
+      Real qx = -1, qy = 0;
+      if (e1 > 0) {
+        const Real lambda = probe_.blend(t.len, e1, v.py);
+        qx = v.px + lambda * (cx - v.px);
+        qy = v.py + lambda * (cy - v.py);
+      }
+      // Does the segment Q -> S cross AB? Division-free form of the paper's
+      // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
+      const Real tq = qx * -sy + sx * qy;
+      kind = tq < 0 ? 1 : (tq > e1 * (qy - sy) ? 2 : 0);
+      // Around a flat vertex every unfolding agrees and no geodesic turns: the probe's verdict
+      // only matters where the vertex could be a corner.
+      if (kind != 0 && t.flat_corner(kind == 1 ? cj : (cj == 2 ? 0 : cj + 1))) kind = 0;
+    } else {
+      // The source lies on T's side of the edge (the paper's same-side case): no straight
+      // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
+      // (Even at a flat vertex: carrying the source on would let it circle round a vertex
+      // and pick up rounding drift; the face gets the straight path through another edge.)
+      const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
+      const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) +
+                      std::sqrt((sx - e1) * (sx - e1) + sy * sy);
+      kind = l1 <= l2 ? 1 : 2;
+    }
+
+    Real new_sigma, new_dT, ex, ey;   // ex, ey: the new source in g's edge frame
+    if (kind == 0) {
+      new_sigma = sigma;
+      new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
+      ex = sx, ey = sy;
+    } else if (kind == 1) {
+      new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
+      new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
+      ex = 0, ey = 0;
+    } else {
+      new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
+      new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
+      ex = e1, ey = 0;
+    }
+
+    // Only a clearly shorter path counts: an improvement lost in rounding would bounce
+    // between faces forever.
+    if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) return;
+    ++stats_.face_updates;
+    if (reached_ && t.dT == std::numeric_limits<Real>::infinity()) reached_->push_back(face_of(g));
+    canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
+    t.sigma = new_sigma;
+    t.dT = new_dT;
+    t.tag = (t.tag & ~kSourceMask) | source;
+    // Max-distance: a face none of whose points can be within the limit is stored, not
+    // expanded (its centroid is farther than the limit by more than its own radius).
+    if (!(new_dT <= limit_) && !(new_dT - centroid_radius(t.len) <= limit_)) return;
+    push(QueueEntry<Real>{next_halfedge(g), new_dT});
+    push(QueueEntry<Real>{prev_halfedge(g), new_dT});
+  }
+
+  // A step sent by another thread's expand() (RemoteStep; counted there), applied by the
+  // face's owner.
+  template <class Push>
+  void apply(const RemoteStep<Real>& m, Push&& push) {
+    try_update(m.g, m.link, m.h_dir, m.hx, m.hy, m.e1h, m.sigma, m.source, push);
+  }
+
+  // Parallel runs: this step owns faces [begin, end) of chunks of `chunk` faces; steps into
+  // other faces go to outbox[owner] instead.
+  void partition(Index begin, Index end, Index chunk, std::vector<std::vector<RemoteStep<Real>>>* outbox) {
+    own_begin_ = begin, own_end_ = end, own_chunk_ = chunk, outbox_ = outbox;
   }
 
  private:
@@ -154,6 +192,8 @@ class UpdateStep {
   ProbeTable<Real> probe_;
   Real limit_;
   std::vector<Index>* reached_ = nullptr;
+  Index own_begin_ = 0, own_end_ = 0, own_chunk_ = 1;
+  std::vector<std::vector<RemoteStep<Real>>>* outbox_ = nullptr;
   PropagationStats& stats_;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // Seeding and propagation, shared by full queries (geodesic_solver.cpp) and bounded ones
 // (local_query.cpp). Templates on the scalar type; included by both.
+#include "parallel_propagation.hpp"
 #include "solver_impl.hpp"
 
 #include <gsp/errors.hpp>
@@ -9,6 +10,16 @@
 #include <string>
 
 namespace gsp {
+
+// The thread count of one propagation (GeodesicOptions::threads). Automatic: parallel for big
+// meshes with sources spread over every thread's block (kParallelMinSeedsPerThread seed entries each);
+// a front from a few sources starts in one block and the others would mostly wait.
+inline unsigned propagation_threads(const GeodesicOptions& options, std::size_t num_faces, std::size_t num_seeds) {
+  if (options.threads > 0) return options.threads;
+  if (num_faces < kParallelMinFaces || detail::inside_parallel_region()) return 1;
+  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  return num_seeds >= kParallelMinSeedsPerThread * hardware ? hardware : 1;
+}
 
 template <class Real>
 void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Source>& sources, FaceRecord<Real>* state,
@@ -74,9 +85,18 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
   step.collect_reached(reached);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
+  const unsigned threads = propagation_threads(options, mesh.num_faces(), queue.size());
+  const bool parallel = threads > 1 && !goal && !reached &&
+                        (options.strategy == Strategy::speed_limiter || options.strategy == Strategy::hybrid_postpone);
   auto propagate = [&] {
     using detail::Postpone;
     if (goal) return detail::run_targeted(step, queue, *goal, stats);
+    if (parallel) {
+      detail::run_parallel_speed_limiter(state, mesh.num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
+                                         limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
+                                         stats);
+      return;
+    }
     switch (options.strategy) {
       case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, stats); break;
       case Strategy::static_postpone:

@@ -48,6 +48,14 @@ enum class Strategy : std::uint8_t {
 
 enum class Precision : std::uint8_t { single, double_precision };
 
+// Meshes with fewer faces propagate on one thread unless GeodesicOptions::threads says
+// otherwise: below it the threads' start-up and the messages cost more than they save.
+inline constexpr std::size_t kParallelMinFaces = 200000;
+// ... and with at least this many seeded faces per thread (a vertex source seeds its fan,
+// about 6): a front from a few sources starts in one thread's block of faces and the other
+// threads would mostly wait for it.
+inline constexpr std::size_t kParallelMinSeedsPerThread = 64;
+
 struct GeodesicOptions {
   Strategy strategy = Strategy::speed_limiter;
   Precision precision = Precision::single;
@@ -60,6 +68,14 @@ struct GeodesicOptions {
   // max_distance is reached. Vertices farther than this are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
   bool want_face_sources = false;   // fill GeodesicResult::face_sources
+  // Threads for one propagation (speed_limiter and hybrid_postpone strategies): 0 = automatic
+  // (all hardware threads for meshes of at least kParallelMinFaces faces and sources spread
+  // enough, see kParallelMinSeedsPerThread; one otherwise and inside an already parallel
+  // caller such as compute_many), 1 = sequential. Faces are split
+  // into one block per thread along the cache layout; steps between blocks travel as messages.
+  // The result equals the sequential one up to GSP's order effects (docs/performance.md).
+  // Runs with targets and bounded queries (compute_local) stay on one thread.
+  unsigned threads = 0;
   // Targets (input vertex indices): when given, the propagation runs in a heap (the
   // priority_queue strategy, whatever `strategy` says) and stops as soon as no queued face can
   // still shorten a target's distance; the targets' distances are then final, the rest of the
