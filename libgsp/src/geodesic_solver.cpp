@@ -59,12 +59,13 @@ void GeodesicSolver::Impl::build_delaunay() {
   t.triangles = input.triangles;
   t.length = input.length;
   t.skipped = skipped_face;
+  t.positions = &mesh.positions;   // picks each patch's winding (intrinsic_delaunay.hpp)
   t.ring.resize(input.ring.size());
   for (std::size_t h = 0; h < t.ring.size(); ++h) t.ring[h] = input.ring[h] & detail::kRingIndexMask;
   // A generous cap: Delaunay flipping ends after finitely many flips, but float-stored slivers
   // can make near-ties flip back and forth; the result is good long before the cap.
   flips = detail::make_intrinsic_delaunay(t, 20 * t.length.size());
-  if (flips == 0) return;
+  if (flips == 0 && t.reoriented == 0) return;   // a soup needing no flips still gets one winding
   delaunay = std::make_unique<Triangulation>();
   delaunay->triangles = std::move(t.triangles);
   delaunay->length = std::move(t.length);

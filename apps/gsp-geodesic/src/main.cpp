@@ -138,6 +138,9 @@ void run(cli::Context& ctx, const Options& o) {
     go.precision = precision;
     go.f = o.f;
     go.max_distance = max_distance;
+    // One field: the propagation's own threads (0 = automatic); --separate / --matrix spread
+    // the queries instead, each on one thread.
+    if (!(o.separate || o.matrix)) go.threads = o.threads;
     ctx.settings()["strategy"] = o.strategy;
     ctx.settings()["precision"] = o.precision;
     ctx.settings()["heuristic"] = o.heuristic;

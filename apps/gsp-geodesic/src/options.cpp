@@ -60,7 +60,9 @@ void add_options(CLI::App& app, Options& o) {
                "one field per source (written to OUT-0.ext, OUT-1.ext, ...), computed in parallel");
   app.add_flag("--matrix", o.matrix,
                "the matrix of distances between the --source-vertex vertices (.txt: spaces, .csv: commas)");
-  app.add_option("--threads", o.threads, "threads for --separate / --matrix (default: all)");
+  app.add_option("--threads", o.threads, "threads: for --separate / --matrix the queries in parallel (default: all); "
+                 "for one field the propagation's own (default: automatic, parallel for meshes of 200k+ faces with "
+                 "many sources)");
   add_metric_option(app, o.metric);
   render::add_preview_options(app, o.preview, "the field with iso-lines, sources in red");
   cli::add_load_options(app, o.load);
