@@ -33,7 +33,7 @@ Outcome timed_run(Runner& runner, Index source, bool cpu_clock, SourceRun& out) 
   const std::uint64_t c1 = cycle_counter();
   out.wall_seconds.push_back(wall);
   out.cpu_seconds.push_back(cpu);
-  out.seconds.push_back(cpu_clock ? cpu : wall);
+  out.seconds.push_back(cpu_clock && !runner.threaded() ? cpu : wall);
   out.cycles.push_back(double(c1 - c0));
   return o;
 }

@@ -22,6 +22,8 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::gsp_random_layout, "gsp-random-layout", "GSP on a randomly shuffled mesh, layout optimisation off", true},
       {Method::gsp_no_layout, "gsp-no-layout", "GSP on the file's order, layout optimisation off", true},
       {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
+      {Method::gsp_2threads, "gsp-2threads", "GSP's parallel propagation on 2 threads (time is wall time)", false},
+      {Method::gsp_4threads, "gsp-4threads", "GSP's parallel propagation on 4 threads (time is wall time)", false},
       {Method::dijkstra, "dijkstra", "Dijkstra on the edge graph (binary heap)", true},
       {Method::heat, "heat", "CGAL heat method on the input triangles", true},
       {Method::heat_idt, "heat-idt", "CGAL heat method on an intrinsic Delaunay retriangulation", true},
@@ -86,6 +88,7 @@ class GspRunner : public Runner {
   }
   std::size_t state_bytes() const override { return solver_.state_bytes(options_.precision); }
   std::size_t intrinsic_flips() const override { return solver_.intrinsic_flips(); }
+  bool threaded() const override { return options_.threads != 1; }
 
  private:
   GeodesicSolver solver_;
@@ -178,8 +181,11 @@ class PointCloudRunner : public Runner {
 std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed, unsigned neighbours) {
   SolverOptions so;
   GeodesicOptions go;
+  go.threads = 1;   // every GSP variant on one thread unless it says otherwise
   switch (method) {
     case Method::gsp: break;
+    case Method::gsp_2threads: go.threads = 2; break;
+    case Method::gsp_4threads: go.threads = 4; break;
     case Method::gsp_pq: go.strategy = Strategy::priority_queue; break;
     case Method::gsp_bfs: go.strategy = Strategy::bfs; break;
     case Method::gsp_hybrid: go.strategy = Strategy::hybrid_postpone; break;

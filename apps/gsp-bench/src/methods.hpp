@@ -22,6 +22,8 @@ enum class Method {
   gsp_random_layout,   // the mesh shuffled in memory, no layout optimisation
   gsp_no_layout,       // the mesh in file order, no layout optimisation
   gsp_input_faces,     // on the input triangles instead of their intrinsic Delaunay flip
+  gsp_2threads,        // the parallel propagation on 2 threads (GeodesicOptions::threads)
+  gsp_4threads,        // ... on 4 threads
   dijkstra,            // edge graph, binary heap
   heat,                // CGAL heat method on the input triangles
   heat_idt,            // CGAL heat method on an intrinsic Delaunay retriangulation
@@ -69,6 +71,9 @@ class Runner {
   // GSP: bytes of propagation state per query (GeodesicSolver::state_bytes); 0 otherwise.
   virtual std::size_t state_bytes() const { return 0; }
   virtual std::size_t intrinsic_flips() const { return 0; }
+  // Runs on several threads: timed by the wall clock even with --cpu-clock (one thread's CPU
+  // time would miss the others).
+  virtual bool threaded() const { return false; }
 };
 
 // Prepares `method` on `mesh` (the precompute step). `seed` shuffles the random layout;
