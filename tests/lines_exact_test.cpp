@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -59,21 +60,38 @@ std::vector<Index> edge_loop_around(const TriangleMesh& m, Index center, int hop
   return chain.size() == loop.size() ? chain : std::vector<Index>{};
 }
 
-// Exact distances from points sampled along every piece of the source.
+double mean_edge(const TriangleMesh& m) {
+  double sum = 0;
+  for (const Triangle& t : m.triangles)
+    for (int i = 0; i < 3; ++i) sum += distance(m.positions[t[i]], m.positions[t[(i + 1) % 3]]);
+  return sum / double(3 * m.num_faces());
+}
+
+// Exact distances from points sampled along every piece of the source. A point is sampled once:
+// an edge source has a piece on each side of the edge, and CGAL 5.5's sequence tree returns
+// distances far too large (4.28 where one of the sources alone gives 3.29) when sources nearly
+// coincide in two faces.
 std::vector<double> sampled_exact(const TriangleMesh& m, const lines::LineSource& src, int per_piece) {
   std::vector<reference::ExactSource> samples;
-  std::set<std::pair<Index, std::array<double, 3>>> seen;   // a piece's end starts the next one
+  std::vector<Vec3> placed;
+  const double tiny = 1e-4 * mean_edge(m);
   for (const lines::SegmentPiece& p : src.pieces)
     for (int k = 0; k <= per_piece; ++k) {
       const double t = double(k) / per_piece;
       std::array<double, 3> w;
       for (int i = 0; i < 3; ++i) w[i] = std::max(0.0, (1 - t) * p.start[i] + t * p.end[i]);
       const double sum = w[0] + w[1] + w[2];
-      // Nudged off the edges by 1e-6 of the face: CGAL 5.5's sequence tree returns distances far
-      // too small (0.1 for 2.57, below the straight-line distance) when sources lie exactly
-      // on edges, as the crossing points of a snapped polyline do.
+      // Nudged off the edges by 1e-6 of the face: CGAL 5.5 also returns distances below the
+      // straight-line distance when sources lie exactly on edges, as the crossing points of a
+      // snapped polyline do.
       for (double& x : w) x = (1 - 1e-6) * x / sum + 1e-6 / 3;
-      if (seen.insert({p.face, w}).second) samples.push_back(reference::ExactSource::at_point(p.face, w));
+      const Triangle& f = m.triangles[p.face];
+      const Vec3 q = w[0] * m.positions[f[0]] + w[1] * m.positions[f[1]] + w[2] * m.positions[f[2]];
+      bool seen = false;
+      for (const Vec3& o : placed) seen = seen || distance(o, q) < tiny;
+      if (seen) continue;
+      placed.push_back(q);
+      samples.push_back(reference::ExactSource::at_point(p.face, w));
     }
   return reference::exact_geodesic_distances(m, samples);
 }
@@ -92,13 +110,6 @@ Errors relative_errors(const std::vector<double>& got, const std::vector<double>
   }
   if (e.counted) e.mean /= double(e.counted);
   return e;
-}
-
-double mean_edge(const TriangleMesh& m) {
-  double sum = 0;
-  for (const Triangle& t : m.triangles)
-    for (int i = 0; i < 3; ++i) sum += distance(m.positions[t[i]], m.positions[t[(i + 1) % 3]]);
-  return sum / double(3 * m.num_faces());
 }
 
 // The first simple loop of at least `min_edges` edges around `center`.
