@@ -19,15 +19,6 @@ TriangleMesh fertility() {
   return io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
 }
 
-double diagonal(const TriangleMesh& m) {
-  Vec3 lo = m.positions[0], hi = lo;
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return distance(lo, hi);
-}
-
 // compute_local against compute on the same (input) faces: identical vertex distances and
 // labels within max_distance, nothing beyond, identical face records for the faces reached.
 void expect_same(const GeodesicSolver& solver, LocalWorkspace& ws, const std::vector<Source>& sources,
@@ -64,7 +55,7 @@ TEST(LocalQuery, SameNumbersAsComputeWithinTheRadius) {
   const TriangleMesh m = fertility();
   const GeodesicSolver solver(m);
   LocalWorkspace ws = solver.make_workspace();
-  const double r = 0.08 * diagonal(m);
+  const double r = 0.08 * bbox_diagonal(m);
   GeodesicOptions o;
   o.max_distance = r;
   SplitMix rng{11};
@@ -85,7 +76,7 @@ TEST(LocalQuery, CostFollowsTheNeighbourhood) {
   const GeodesicSolver solver(m);
   LocalWorkspace ws = solver.make_workspace();
   GeodesicOptions o;
-  o.max_distance = 0.02 * diagonal(m);
+  o.max_distance = 0.02 * bbox_diagonal(m);
   const LocalField small = solver.compute_local({Source::at_vertex(10)}, o, ws);
   EXPECT_GT(small.vertices.size(), 3u);
   EXPECT_LT(small.faces.size(), m.num_faces() / 50);
@@ -100,7 +91,7 @@ TEST(LocalQuery, WorkspaceIsRestoredBetweenQueries) {
   const TriangleMesh m = fertility();
   const GeodesicSolver solver(m);
   GeodesicOptions o;
-  o.max_distance = 0.1 * diagonal(m);
+  o.max_distance = 0.1 * bbox_diagonal(m);
   LocalWorkspace fresh_a = solver.make_workspace(), fresh_b = solver.make_workspace(), ws = solver.make_workspace();
   const std::vector<Source> a{Source::in_face(100, {0.3, 0.3, 0.4})}, b{Source::at_vertex(3000)};
   const LocalField ra = solver.compute_local(a, o, fresh_a), rb = solver.compute_local(b, o, fresh_b);

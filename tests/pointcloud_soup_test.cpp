@@ -40,15 +40,6 @@ TriangleMesh split_and_flip(const TriangleMesh& m, double jitter, bool flip, std
   return soup;
 }
 
-double bbox_diagonal(const TriangleMesh& m) {
-  Vec3 lo = m.positions[0], hi = lo;
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return distance(lo, hi);
-}
-
 struct Difference {
   double max = 0;    // over vertices farther than 1% of the largest distance
   double mean = 0;   // over all vertices but the source

@@ -4,6 +4,7 @@
 
 #include <gsp/mesh.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -82,6 +83,16 @@ inline BentStrip bent_strip(int nx, int ny, double radius, double turn, double d
 
 inline double relative_error(double approx, double exact) {
   return exact > 0 ? std::abs(approx - exact) / exact : std::abs(approx);
+}
+
+// The diagonal of the axis-aligned bounding box.
+inline double bbox_diagonal(const TriangleMesh& m) {
+  Vec3 lo = m.positions.at(0), hi = lo;
+  for (const Vec3& p : m.positions) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  return distance(lo, hi);
 }
 
 }  // namespace gsp::test

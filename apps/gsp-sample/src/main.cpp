@@ -93,6 +93,26 @@ void report(cli::Context& ctx, const sampling::Sampler& sampler, const sampling:
   ops["faces_reached"] = result.stats.faces_reached;
 }
 
+// The quality figures of `result` into --stats (section "quality"), with a progress line.
+void report_quality(cli::Context& ctx, const Options& o, const sampling::Sampler& sampler,
+                    const sampling::SamplingResult& result) {
+  sampling::QualityOptions qo;
+  qo.max_checked = o.quality_samples;
+  qo.seed = o.seed;
+  auto progress = ctx.progress("quality");
+  qo.progress = progress->callback();
+  const sampling::SamplingQuality q =
+      ctx.timer().time("quality", [&] { return sampling::measure_quality(sampler, result, qo); });
+  cli::Json& j = ctx.stats()["quality"];
+  j["samples_checked"] = q.samples_checked;
+  j["min_distance"] = q.min_distance;
+  j["min_distance_over_radius"] = q.min_distance_ratio;
+  j["coverage_radius"] = q.coverage_radius;
+  j["coverage_over_radius"] = q.coverage_ratio;
+  j["packing_radius"] = q.packing_radius;
+  j["normalized_radius"] = q.normalized_radius;
+}
+
 // --evaluate: the quality figures of someone else's point set at radius r.
 void evaluate(cli::Context& ctx, const Options& o, double radius_arg) {
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
@@ -115,19 +135,7 @@ void evaluate(cli::Context& ctx, const Options& o, double radius_arg) {
   res["radius_over_diagonal"] = result.radius / sampler.diagonal();
   res["area"] = sampler.area();
   res["max_snap_distance"] = snapped;
-  sampling::QualityOptions qo;
-  qo.max_checked = o.quality_samples;
-  qo.seed = o.seed;
-  const sampling::SamplingQuality q =
-      ctx.timer().time("quality", [&] { return sampling::measure_quality(sampler, result, qo); });
-  cli::Json& j = ctx.stats()["quality"];
-  j["samples_checked"] = q.samples_checked;
-  j["min_distance"] = q.min_distance;
-  j["min_distance_over_radius"] = q.min_distance_ratio;
-  j["coverage_radius"] = q.coverage_radius;
-  j["coverage_over_radius"] = q.coverage_ratio;
-  j["packing_radius"] = q.packing_radius;
-  j["normalized_radius"] = q.normalized_radius;
+  report_quality(ctx, o, sampler, result);
 }
 
 void run(cli::Context& ctx, const Options& o) {
@@ -176,23 +184,7 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.note("--count " + std::to_string(o.count) + ": got " + std::to_string(result.samples.size()) +
              " samples, the closest the radius search reached");
 
-  if (ctx.stats_requested()) {
-    sampling::QualityOptions qo;
-    qo.max_checked = o.quality_samples;
-    qo.seed = o.seed;
-    auto progress = ctx.progress("quality");
-    qo.progress = progress->callback();
-    const sampling::SamplingQuality q =
-        ctx.timer().time("quality", [&] { return sampling::measure_quality(sampler, result, qo); });
-    cli::Json& j = ctx.stats()["quality"];
-    j["samples_checked"] = q.samples_checked;
-    j["min_distance"] = q.min_distance;
-    j["min_distance_over_radius"] = q.min_distance_ratio;
-    j["coverage_radius"] = q.coverage_radius;
-    j["coverage_over_radius"] = q.coverage_ratio;
-    j["packing_radius"] = q.packing_radius;
-    j["normalized_radius"] = q.normalized_radius;
-  }
+  if (ctx.stats_requested()) report_quality(ctx, o, sampler, result);
 
   ctx.timer().time("write", [&] { sample_app::write_samples(o.output, result.samples, o.ascii); });
   if (o.preview.wanted())
