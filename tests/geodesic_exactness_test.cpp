@@ -101,5 +101,38 @@ TEST(GeodesicExactness, DevelopableStripUnrollsToPlaneDistances) {
   }
 }
 
+// Two point sources in one face: the face keeps one virtual source, and the other source goes
+// on from the face's corners. Exact at those corners; elsewhere the path through a corner
+// over-estimates a little where the lost source is the nearer one (measured on this grid:
+// mean 0.24%, max 9% next to the face; before the corners took over: mean 3.8%, max 762%).
+TEST(Exactness, TwoSourcesInOneFaceBothReach) {
+  const TriangleMesh m = jittered_grid(40, 0.2, 7);
+  const GeodesicSolver solver(m);
+  const Index f = 1000;
+  const std::array<double, 3> b0{0.9, 0.05, 0.05}, b1{0.05, 0.05, 0.9};
+  const GeodesicResult r = solver.compute({Source::in_face(f, b0), Source::in_face(f, b1)});
+  const Triangle& t = m.triangles[f];
+  auto point = [&](const std::array<double, 3>& b) {
+    return b[0] * m.positions[t[0]] + b[1] * m.positions[t[1]] + b[2] * m.positions[t[2]];
+  };
+  const Vec3 p0 = point(b0), p1 = point(b1);
+  double sum = 0;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    const double d0 = distance(m.positions[v], p0), d1 = distance(m.positions[v], p1);
+    const double e = std::min(d0, d1);
+    EXPECT_GE(r.vertex_distance[v], e * (1 - 1e-5)) << v;   // never below the true distance
+    EXPECT_LT(r.vertex_distance[v], e * 1.1) << v;
+    sum += (r.vertex_distance[v] - e) / e;
+  }
+  EXPECT_LT(sum / double(m.num_vertices()), 0.005);
+  for (Index v : t) {
+    const double e = std::min(distance(m.positions[v], p0), distance(m.positions[v], p1));
+    EXPECT_NEAR(r.vertex_distance[v], e, 1e-5 * e) << "corner " << v;   // float state
+  }
+  // Each source labels the corner next to it.
+  EXPECT_EQ(r.vertex_source[t[0]], 0u);
+  EXPECT_EQ(r.vertex_source[t[2]], 1u);
+}
+
 }  // namespace
 }  // namespace gsp::test

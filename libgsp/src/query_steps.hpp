@@ -29,6 +29,12 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
   if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^29 - 1)");
+  struct FacePoint {
+    Index face, label;
+    double w[3];
+    double offset;
+  };
+  std::vector<FacePoint> face_points;   // multi-source runs only (see below)
 
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
@@ -68,6 +74,33 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
       if (seed_face(length, f, w, scale, src.offset * scale, label, state)) {
         for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
         if (seeded) seeded->push_back(f);
+      }
+      if (sources.size() > 1) face_points.push_back({f, label, {w[0], w[1], w[2]}, src.offset});
+    }
+  }
+  // A face holds one virtual source: of two sources in one face only the one nearer the
+  // centroid is kept, and the other would vanish. A source that lost its face goes on from
+  // the face's corners instead (each a vertex source with the straight in-face distance as
+  // offset): exact at the corners, the geodesic through a corner beyond them.
+  for (const FacePoint& fp : face_points) {
+    if (state[fp.face].source() == fp.label) continue;
+    double p[3][2];
+    detail::canonical_corners(length, fp.face, 1.0, p);
+    const double px = fp.w[0] * p[0][0] + fp.w[1] * p[1][0] + fp.w[2] * p[2][0];
+    const double py = fp.w[0] * p[0][1] + fp.w[1] * p[1][1] + fp.w[2] * p[2][1];
+    for (Index i = 0; i < 3; ++i) {
+      const Index v = tri.triangles[fp.face][i];
+      const double offset = fp.offset + std::hypot(p[i][0] - px, p[i][1] - py);   // model units
+      vertex_seeds.push_back({v, offset, fp.label});
+      if (goal) goal->vertex_value(v, Real(offset * scale));
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
+        const Index f = face_of(c);
+        if (skipped_face[f]) continue;
+        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, offset * scale, fp.label, state)) {
+          queue.push_back({next_halfedge(c), state[f].dT});
+          if (seeded) seeded->push_back(f);
+        }
       }
     }
   }
