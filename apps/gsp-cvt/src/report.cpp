@@ -66,6 +66,7 @@ void report_cvt(cli::Context& ctx, const cvt::CvtResult& cvt) {
   ops["update_steps"] = s.update_steps;
   ops["working_faces"] = s.working_faces;
   ops["subdivisions"] = s.subdivisions;
+  ops["bisections"] = s.bisections;
   cli::PhaseTimer& t = ctx.timer();
   t.add("subdivide", s.timings.subdivide);
   t.add("build", s.timings.prepare);

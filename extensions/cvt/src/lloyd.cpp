@@ -305,8 +305,7 @@ Site to_input(const WorkingMesh& w, const SurfaceSite& s) {
 
 // Initial sites. Poisson-disk sampling runs on the input mesh (its radius search costs a few
 // sampling runs, 4^levels times cheaper there than on the working mesh) and each sample is
-// found again among the working faces of its input face (they are contiguous: the children
-// of face f are 4f..4f+3 at every level). Farthest-point sampling picks vertices, so it runs
+// found again among the working faces of its input face. Farthest-point sampling picks vertices, so it runs
 // on the working mesh when the input has too few.
 std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMesh& w, const WorkingGeometry& g,
                                        std::size_t n, const CvtOptions& o) {
@@ -332,11 +331,17 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
     return sites;
   }
   const sampling::Sampler sampler(mesh);
-  const Index per_face = Index(1) << (2 * w.levels);
+  // Working faces per input face, CSR.
+  std::vector<Index> begin(mesh.num_faces() + 1, 0), children(w.parent.size());
+  for (Index p : w.parent) ++begin[p + 1];
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) begin[f + 1] += begin[f];
+  std::vector<Index> fill(begin.begin(), begin.end() - 1);
+  for (Index f = 0; f < w.parent.size(); ++f) children[fill[w.parent[f]]++] = f;
   for (const sampling::Sample& s : sampler.sample(so).samples) {
     SurfaceSite best;
     double best_d = std::numeric_limits<double>::infinity();
-    for (Index f = s.face * per_face; f < (s.face + 1) * per_face; ++f) {
+    for (Index i = begin[s.face]; i < begin[s.face + 1]; ++i) {
+      const Index f = children[i];
       const SurfaceSite q = g.closest_on_face(f, s.position);
       const double d = distance(q.position, s.position);
       if (d < best_d) best_d = d, best = q;
@@ -372,12 +377,16 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
          double(mesh.num_faces()) * std::pow(4.0, levels) < double(options.min_faces_per_site) * double(n))
     ++levels;
   out.working = subdivide(mesh, levels);
-  stats.subdivisions = levels;
-  stats.working_faces = out.working.mesh.num_faces();
-  stats.timings.subdivide = seconds_since(t0);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
                        " times) has only " + std::to_string(out.working.mesh.num_vertices()) + " vertices");
+  // Faces longer than half the site spacing could hold two sites: bisect them (bounded, so a
+  // degenerate input cannot blow up).
+  stats.bisections = refine_long_edges(out.working, 0.5 * std::sqrt(area / double(n)),
+                                       out.working.mesh.num_faces() + 4 * n);
+  stats.subdivisions = levels;
+  stats.working_faces = out.working.mesh.num_faces();
+  stats.timings.subdivide = seconds_since(t0);
 
   t0 = Clock::now();
   const WorkingGeometry g(out.working.mesh);

@@ -4,6 +4,9 @@
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/errors.hpp>
 
+#include <algorithm>
+#include <numeric>
+
 namespace gsp::cvt {
 
 namespace {
@@ -59,7 +62,77 @@ void split_once(WorkingMesh& w) {
   ++w.levels;
 }
 
+// One pass of longest-edge bisection: edges longer than max_edge that are their faces' longest,
+// longest first, as long as no face gets two split edges in this pass. Returns the number split.
+std::size_t bisect_once(WorkingMesh& w, double max_edge) {
+  TriangleMesh& m = w.mesh;
+  const Connectivity conn = build_connectivity(m);
+  auto length = [&](Index h) { return distance(m.positions[from_vertex(m, h)], m.positions[to_vertex(m, h)]); };
+  std::vector<Index> candidates;
+  for (Index f = 0; f < m.num_faces(); ++f) {
+    Index longest = 3 * f;
+    for (Index i = 1; i < 3; ++i)
+      if (length(3 * f + i) > length(longest)) longest = 3 * f + i;
+    if (length(longest) > max_edge && conn.halfedge_edge[longest] != kInvalidIndex) candidates.push_back(longest);
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](Index a, Index b) { return length(a) > length(b); });
+  std::vector<bool> face_taken(m.num_faces(), false);
+  std::vector<Index> split_halfedge(m.num_faces(), kInvalidIndex);   // per face: its edge to split
+  std::vector<Index> edge_vertex(conn.num_edges(), kInvalidIndex);
+  std::size_t split = 0;
+  for (Index h : candidates) {
+    bool free = true;
+    Index o = h;
+    do {
+      free = free && !face_taken[face_of(o)];
+      o = conn.radial_next[o];
+    } while (o != h);
+    if (!free) continue;
+    const Index e = conn.halfedge_edge[h];
+    edge_vertex[e] = Index(m.positions.size());
+    m.positions.push_back(0.5 * (m.positions[from_vertex(m, h)] + m.positions[to_vertex(m, h)]));
+    o = h;
+    do {
+      face_taken[face_of(o)] = true;
+      split_halfedge[face_of(o)] = o;
+      o = conn.radial_next[o];
+    } while (o != h);
+    ++split;
+  }
+  const std::size_t nf = m.num_faces();
+  for (Index f = 0; f < nf; ++f) {
+    const Index h = split_halfedge[f];
+    if (h == kInvalidIndex) continue;
+    const Index i = corner_of(h);
+    const Triangle t = m.triangles[f];
+    const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+    const Index mid_v = edge_vertex[conn.halfedge_edge[h]];
+    const auto cb = w.corner_bary[f];
+    const Bary ba = cb[i], bb = cb[(i + 1) % 3], bc = cb[(i + 2) % 3], bm = mid(ba, bb);
+    // (a, b, c) -> (a, m, c) in place and (m, b, c) appended: the same turning direction.
+    m.triangles[f] = {a, mid_v, c};
+    w.corner_bary[f] = {ba, bm, bc};
+    m.triangles.push_back({mid_v, b, c});
+    w.corner_bary.push_back({bm, bb, bc});
+    w.parent.push_back(w.parent[f]);
+  }
+  return split;
+}
+
 }  // namespace
+
+std::size_t refine_long_edges(WorkingMesh& w, double max_edge, std::size_t max_faces) {
+  if (!(max_edge > 0)) throw InvalidInput("cvt: the edge length bound must be > 0");
+  std::size_t total = 0;
+  // Each pass rebuilds the connectivity: a pass cap keeps the cost bounded too (12 passes
+  // halve the longest edges at least 6 times over).
+  for (int pass = 0; pass < 12 && w.mesh.num_faces() < max_faces; ++pass) {
+    const std::size_t n = bisect_once(w, max_edge);
+    if (n == 0) break;
+    total += n;
+  }
+  return total;
+}
 
 WorkingMesh subdivide(const TriangleMesh& mesh, int levels) {
   if (levels < 0) throw InvalidInput("cvt: negative subdivision level");

@@ -83,15 +83,16 @@ struct CvtStats {
   std::size_t junction_fixes = 0;  // sites added where the dual would not be manifold
   std::size_t working_faces = 0;
   int subdivisions = 0;
+  std::size_t bisections = 0;      // long edges split after the uniform subdivision
   bool converged = false;          // tolerance met (else the iteration cap or no decrease)
   std::uint64_t update_steps = 0;  // GSP update steps over all propagations
   std::size_t propagations = 0;
   CvtTimings timings;
 };
 
-// The working mesh: the input split `levels` times 1-to-4. Its first V vertices are the
-// input's vertices; face f of it lies in input face parent[f], its corner k at the parent's
-// barycentric coordinates corner_bary[f][k].
+// The working mesh: the input split `levels` times 1-to-4, then long edges bisected. Its
+// first V vertices are the input's vertices; face f of it lies in input face parent[f], its
+// corner k at the parent's barycentric coordinates corner_bary[f][k].
 struct WorkingMesh {
   TriangleMesh mesh;
   std::vector<Index> parent;
@@ -99,6 +100,14 @@ struct WorkingMesh {
   int levels = 0;
 };
 WorkingMesh subdivide(const TriangleMesh& mesh, int levels);
+
+// Longest-edge bisection (conforming: an edge is split in all its faces) until no edge is
+// longer than max_edge, or the mesh has max_faces faces, or after 12 passes; the surface does
+// not move. For inputs
+// whose faces differ much in size (a flat base of a few large triangles under a fine scan),
+// where uniform splitting leaves faces larger than a Voronoi region and two sites share a face
+// (GSP then keeps only one of them). Returns the number of edges split.
+std::size_t refine_long_edges(WorkingMesh& w, double max_edge, std::size_t max_faces);
 
 struct CvtResult {
   std::vector<Site> sites;
