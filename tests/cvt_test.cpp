@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -44,6 +45,39 @@ TEST(CvtSubdivide, KeepsSurfaceTopologyAndParents) {
       EXPECT_LT(distance(p, w.mesh.positions[w.mesh.triangles[f][k]]), 1e-9);
     }
   }
+}
+
+TEST(CvtSubdivide, BisectionBoundsEdgesKeepsSurface) {
+  // A square of two big triangles next to a fine grid would leave faces much larger than a
+  // region; bisection splits them conformingly until no edge exceeds the bound.
+  TriangleMesh m = test::square_grid(1, 4.0);
+  cvt::WorkingMesh w = cvt::subdivide(m, 0);
+  const std::size_t split = cvt::refine_long_edges(w, 0.5, 100000);
+  EXPECT_GT(split, 0u);
+  double longest = 0;
+  for (const Triangle& t : w.mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      longest = std::max(longest, distance(w.mesh.positions[t[i]], w.mesh.positions[t[(i + 1) % 3]]));
+  EXPECT_LE(longest, 0.5);
+  EXPECT_NEAR(area_of(w.mesh), 16.0, 1e-9);
+  const TopologyReport r = analyze_topology(w.mesh, build_connectivity(w.mesh));
+  EXPECT_EQ(r.euler_characteristic, 1);
+  EXPECT_EQ(r.boundary_loops, 1u);
+  EXPECT_TRUE(r.is_manifold());
+  EXPECT_EQ(r.inconsistent_edges, 0u);
+  ASSERT_EQ(w.parent.size(), w.mesh.num_faces());
+  for (Index f = 0; f < w.mesh.num_faces(); ++f) {
+    const Triangle& pt = m.triangles[w.parent[f]];
+    for (int k = 0; k < 3; ++k) {
+      const auto& b3 = w.corner_bary[f][k];
+      const Vec3 p = b3[0] * m.positions[pt[0]] + b3[1] * m.positions[pt[1]] + b3[2] * m.positions[pt[2]];
+      EXPECT_LT(distance(p, w.mesh.positions[w.mesh.triangles[f][k]]), 1e-12);
+    }
+    // Same turning direction as the input (all faces face +z).
+    const Triangle& t = w.mesh.triangles[f];
+    EXPECT_GT(cross(w.mesh.positions[t[1]] - w.mesh.positions[t[0]], w.mesh.positions[t[2]] - w.mesh.positions[t[0]]).z, 0);
+  }
+  EXPECT_THROW(cvt::refine_long_edges(w, 0.0, 10), InvalidInput);
 }
 
 TEST(CvtEnergy, SingleSiteAtSquareCentreIsOneSixth) {
