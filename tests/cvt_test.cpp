@@ -189,6 +189,9 @@ TEST(CvtOptions, ContradictionsThrow) {
   o.tolerance = -1;
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   o.tolerance = 1e-4;
+  o.over_relaxation = 2.5;
+  EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
+  o.over_relaxation = 1.0;
   o.sites = 100000;   // more than the working mesh has vertices
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   TriangleMesh flat = m;

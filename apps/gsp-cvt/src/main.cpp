@@ -26,7 +26,7 @@ struct Options {
   std::string input, output, regions, edge_length, init = "poisson";
   std::size_t vertices = 0;
   int iterations = 50;
-  double tolerance = 1e-4;
+  double tolerance = 1e-4, over_relaxation = 1.6;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   bool no_fix = false, no_flip = false, ascii = false;
@@ -44,6 +44,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--iterations", o.iterations, "Lloyd iteration cap (default 50)")->check(CLI::NonNegativeNumber);
   app.add_option("--tolerance", o.tolerance, "stop when the energy's relative decrease is below this (default 1e-4)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--over-relaxation", o.over_relaxation,
+                 "Lloyd steps first try this multiple of the step to the centroid (1 = off; default 1.6)")
+      ->check(CLI::Range(1.0, 1.99));
   app.add_option("--init", o.init, "initial sites: poisson (default), farthest or random (area-uniform)")
       ->check(CLI::IsMember({"poisson", "farthest", "random"}));
   app.add_option("--seed", o.seed, "random seed of the initial sites");
@@ -90,6 +93,7 @@ void run(cli::Context& ctx, const Options& o) {
   co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bbox_diagonal(in.mesh) : length_arg;
   co.max_iterations = o.iterations;
   co.tolerance = o.tolerance;
+  co.over_relaxation = o.over_relaxation;
   co.initial = o.init == "farthest" ? cvt::InitialSites::farthest
                : o.init == "random"  ? cvt::InitialSites::random
                                      : cvt::InitialSites::poisson;
@@ -100,6 +104,7 @@ void run(cli::Context& ctx, const Options& o) {
   else ctx.settings()["edge_length"] = co.edge_length;
   ctx.settings()["max_iterations"] = o.iterations;
   ctx.settings()["tolerance"] = o.tolerance;
+  ctx.settings()["over_relaxation"] = o.over_relaxation;
   ctx.settings()["init"] = o.init;
   ctx.settings()["seed"] = o.seed;
   ctx.settings()["fix_regions"] = co.fix_regions;

@@ -364,6 +364,8 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   validate(mesh);
   if (options.max_iterations < 0) throw InvalidInput("cvt: negative iteration cap");
   if (!(options.tolerance >= 0)) throw InvalidInput("cvt: the tolerance must be >= 0");
+  if (!(options.over_relaxation >= 1.0 && options.over_relaxation < 2.0))
+    throw InvalidInput("cvt: the over-relaxation factor must be in [1, 2)");
   CvtResult out;
   CvtStats& stats = out.stats;
   auto t0 = Clock::now();
@@ -417,10 +419,13 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     bool accepted = false;
     std::vector<SurfaceSite> candidate;
     Evaluation ce;
-    // Full step, then half and quarter steps: a Lloyd step decreases the exact energy, but the
-    // labels and centroids here are approximate, so near convergence a step can go up.
-    for (double t : {1.0, 0.5, 0.25}) {
-      candidate = lloyd.step(e, sites, t, t < 1.0);
+    // Over-relaxed step, full step, then half and quarter steps: a Lloyd step decreases the
+    // exact energy, but the labels and centroids here are approximate, so near convergence a
+    // step can go up.
+    std::vector<double> steps{1.0, 0.5, 0.25};
+    if (options.over_relaxation > 1.0) steps.insert(steps.begin(), options.over_relaxation);
+    for (double t : steps) {
+      candidate = lloyd.step(e, sites, t, t != 1.0);
       ce = lloyd.evaluate(candidate);
       if (ce.energy <= e.energy) {
         accepted = true;

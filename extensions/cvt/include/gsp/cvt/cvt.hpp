@@ -44,6 +44,11 @@ struct CvtOptions {
   int max_iterations = 50;
   // Stop when (E_prev - E) / E_prev < tolerance.
   double tolerance = 1e-4;
+  // Each Lloyd step first tries site + w (centroid - site) with this w (over-relaxation; 1:
+  // off), then 1, 1/2, 1/4, keeping the first that lowers the energy. 1.6 took 15 instead
+  // of 18 iterations (fertility) and 25 instead of 30 (armadillo) at 5,000 sites, to a lower
+  // energy, with no step rejected (docs/cvt.md).
+  double over_relaxation = 1.6;
   InitialSites initial = InitialSites::poisson;
   std::uint64_t seed = 1;
   std::size_t min_faces_per_site = 24;   // working-mesh resolution (see above); 0: no split
