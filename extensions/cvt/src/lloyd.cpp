@@ -81,6 +81,7 @@ class Lloyd {
       bool boundary = o_.boundary_sites && touches_boundary(e, s, k);
       if (keep_boundary_state) boundary = boundary && sites[s].on_boundary;
       out[s] = project(e, s, k, target, boundary);
+      if (out[s].face == kInvalidIndex) out[s] = sites[s];
     }
     return out;
   }
@@ -138,8 +139,17 @@ class Lloyd {
         }
       }
     }
-    for (const SurfaceSite& s : added) sites.push_back(s);
-    stats_.sites_added += added.size();
+    // At most max_added_fraction * N sites in all: on CAD meshes (creases, slivers, thin
+    // walls) the fixes would otherwise keep finding regions to split.
+    const std::size_t cap = std::size_t(o_.max_added_fraction * double(stats_.initial_sites));
+    std::size_t kept = 0;
+    for (const SurfaceSite& s : added) {
+      if (s.face == kInvalidIndex || stats_.sites_added >= cap) continue;
+      sites.push_back(s);
+      ++stats_.sites_added;
+      ++kept;
+    }
+    added.resize(kept);
     stats_.timings.fix += seconds_since(t0);
     return !added.empty() || !lost.empty();
   }
@@ -149,7 +159,9 @@ class Lloyd {
     std::vector<SurfaceSite> out = sites;
     for (Index s = 0; s < sites.size(); ++s) {
       const Index k = e.components.main[s];
-      if (k != kInvalidIndex && touches_boundary(e, s, k)) out[s] = project(e, s, k, sites[s].position, true);
+      if (k == kInvalidIndex || !touches_boundary(e, s, k)) continue;
+      const SurfaceSite q = project(e, s, k, sites[s].position, true);
+      if (q.face != kInvalidIndex) out[s] = q;
     }
     return out;
   }
@@ -173,6 +185,8 @@ class Lloyd {
     return false;
   }
 
+  // The point of component k (or of its boundary arc) closest to p; a site with no face when
+  // there is none (the callers keep the old site then).
   SurfaceSite project(const Evaluation& e, Index s, Index k, Vec3 p, bool boundary) const {
     SurfaceSite best;
     double best_d = std::numeric_limits<double>::infinity();
@@ -202,6 +216,7 @@ class Lloyd {
       if (e.components.of_face[f] != k || !(g_.area[f] > 0)) continue;
       if (best == kInvalidIndex || e.result.face_distance[f] > e.result.face_distance[best]) best = f;
     }
+    if (best == kInvalidIndex) return {};   // no face with area: the caller skips it
     return g_.at(best, {1.0 / 3, 1.0 / 3, 1.0 / 3});
   }
 

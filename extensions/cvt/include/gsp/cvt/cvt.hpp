@@ -57,6 +57,7 @@ struct CvtOptions {
   // handle) and add a site there; also keep at least 3 regions along every boundary loop and
   // one run of regions per loop (a region touching a loop twice gets a second site).
   bool fix_regions = true;
+  double max_added_fraction = 0.05;   // the fixes add at most this fraction of the sites
   // Sites whose region touches the mesh boundary are kept on the boundary: they move to the
   // point of their region's boundary arc closest to the area centroid (the constrained
   // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
