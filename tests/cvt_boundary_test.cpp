@@ -1,5 +1,5 @@
 // gsp::cvt remeshing of meshes with boundary: a disk (camelhead), a scan with five holes
-// (bunny), a flat square.
+// (bunny), a flat square; and CAD meshes, which must run to the end without a bad site.
 #include "cvt_meshes.hpp"
 #include "cvt_remesh_check.hpp"
 
@@ -23,6 +23,36 @@ TEST(CvtRemesh, FlatSquare) {
   // which is most of the Hausdorff distance here).
   const TriangleMesh m = test::square_grid(30);
   check_remesh(m, 200, {20.0, 0.02, 0.03});
+}
+
+}  // namespace
+
+namespace {
+
+using namespace gsp;
+
+TEST(CvtRobustness, CadMeshesRunToTheEnd) {
+  // Non-manifold, needles, zero-area faces, thin walls: no usable remesh (docs/cvt.md), but no
+  // failure either: every site is a valid point of the input, the fixes stay within their cap,
+  // and the energy still never rises.
+  if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
+  for (const char* name : {"openscad_nonmanifold_crash.obj", "manifold_offset1.obj"}) {
+    const TriangleMesh m = io::read_mesh(test::shared_mesh(name)).mesh;
+    cvt::CvtOptions o;
+    o.sites = 800;
+    o.max_iterations = 10;
+    const cvt::CvtResult r = cvt::compute_cvt(m, o);
+    EXPECT_LE(r.sites.size(), 800u + 40u) << name;
+    for (const cvt::Site& s : r.sites) {
+      ASSERT_LT(s.face, m.num_faces()) << name;
+      EXPECT_NEAR(s.barycentric[0] + s.barycentric[1] + s.barycentric[2], 1.0, 1e-9);
+      EXPECT_TRUE(is_finite(s.position));
+    }
+    for (std::size_t i = 1; i < r.energy_curve.size(); ++i) EXPECT_LE(r.energy_curve[i], r.energy_curve[i - 1]) << name;
+    const cvt::RemeshResult d = cvt::restricted_delaunay(r);
+    for (const Triangle& t : d.mesh.triangles)
+      for (Index v : t) ASSERT_LT(v, d.mesh.num_vertices());
+  }
 }
 
 }  // namespace
