@@ -118,8 +118,9 @@ TEST(SamplingPoisson, SameSeedSameSamples) {
   o.seed = 2;
   const auto c = sampler.sample(o);
   EXPECT_NE(a.samples[0].position, c.samples[0].position);
-  // The first sample of seed 1 is fixed by our own PRNG: the same on every platform.
-  EXPECT_EQ(a.samples[0].face, 6386u);
+  // The first sample of seed 1 is fixed by our own PRNG and the solver's own layout (the first
+  // batch of candidates is taken in layout order): the same on every platform.
+  EXPECT_EQ(a.samples[0].face, 958u);
 }
 
 TEST(SamplingPoisson, CountIsMetWithinOnePercent) {

@@ -128,8 +128,12 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   result.face_distance.reserve(ws.faces.size());
   result.face_source.reserve(ws.faces.size());
   if (options.want_face_sources) result.face_sources.reserve(ws.faces.size());
+  const double scaled_cutoff = cutoff / mean_edge;
   for (Index f : ws.faces) {
     const FaceRecord<Real>& st = buf.state[f];
+    // Faces that cannot hold a point within max_distance (reached by the last ring of the
+    // front) are left out of the result.
+    if (!(double(st.dT) - double(detail::centroid_radius(st.len)) <= scaled_cutoff)) continue;
     result.faces.push_back(layout.face_order[f]);
     result.face_distance.push_back(double(st.dT) * mean_edge);
     result.face_source.push_back(st.source());

@@ -32,6 +32,14 @@ struct QueueEntry {
   Real dT;
 };
 
+// The largest distance from a face's centroid to a corner: two thirds of the longest median.
+template <class Real>
+inline Real centroid_radius(const Real (&len)[3]) {
+  const Real a2 = len[0] * len[0], b2 = len[1] * len[1], c2 = len[2] * len[2];
+  const Real m = std::max({2 * (b2 + c2) - a2, 2 * (a2 + c2) - b2, 2 * (a2 + b2) - c2});
+  return std::sqrt(std::max(m, Real(0))) / 3;
+}
+
 // An update step for a face owned by another thread: everything the owner needs to run it.
 template <class Real>
 struct RemoteStep {
@@ -180,12 +188,6 @@ class UpdateStep {
   }
 
  private:
-  // The largest distance from the centroid to a corner: two thirds of the longest median.
-  static Real centroid_radius(const Real (&len)[3]) {
-    const Real a2 = len[0] * len[0], b2 = len[1] * len[1], c2 = len[2] * len[2];
-    const Real m = std::max({2 * (b2 + c2) - a2, 2 * (a2 + c2) - b2, 2 * (a2 + b2) - c2});
-    return std::sqrt(std::max(m, Real(0))) / 3;
-  }
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
   FaceRecord<Real>* faces_;
   const Index* ring_;

@@ -16,8 +16,10 @@ namespace gsp {
 // a front from a few sources starts in one block and the others would mostly wait.
 inline unsigned propagation_threads(const GeodesicOptions& options, std::size_t num_faces, std::size_t num_seeds) {
   if (options.threads > 0) return options.threads;
-  if (num_faces < kParallelMinFaces || detail::inside_parallel_region()) return 1;
-  const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
+  if (num_faces < kParallelMinFaces || num_seeds < 2 * kParallelMinSeedsPerThread || detail::inside_parallel_region())
+    return 1;
+  // Asked once: glibc reads /sys for it, which costs more than a small bounded query.
+  static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
   return num_seeds >= kParallelMinSeedsPerThread * hardware ? hardware : 1;
 }
 
@@ -118,7 +120,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
   step.collect_reached(reached);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
-  const unsigned threads = propagation_threads(options, mesh.num_faces(), queue.size());
+  const unsigned threads = goal || reached ? 1 : propagation_threads(options, mesh.num_faces(), queue.size());
   const bool parallel = threads > 1 && !goal && !reached &&
                         (options.strategy == Strategy::speed_limiter || options.strategy == Strategy::hybrid_postpone);
   auto propagate = [&] {

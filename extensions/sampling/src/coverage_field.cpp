@@ -18,6 +18,8 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
     for (Index v : t) centroid_radius_[f] = std::max(centroid_radius_[f], distance(c, mesh.positions[v]));
   }
   for (bool r : referenced) referenced_count_ += r;
+  // A maximal Poisson set's discs cover the surface about three times: one entry per face each.
+  pool_.reserve(3 * mesh.num_faces());
   uncovered_ = referenced_count_;
 }
 

@@ -129,7 +129,7 @@ struct LocalField {
   std::vector<Index> vertices;            // input vertices with distance <= max_distance
   std::vector<double> vertex_distance;    // parallel to `vertices`
   std::vector<Index> vertex_source;       // parallel to `vertices`: the nearest source
-  std::vector<Index> faces;               // input faces the front reached
+  std::vector<Index> faces;               // input faces reached that can hold a point within max_distance
   std::vector<double> face_distance;      // parallel to `faces`: distance at the centroid
   std::vector<Index> face_source;         // parallel to `faces`
   std::vector<VirtualSource> face_sources;   // parallel to `faces`, when want_face_sources
