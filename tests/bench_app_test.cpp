@@ -95,6 +95,25 @@ TEST(BenchApp, ReportsOneRowPerMeshAndMethod) {
   EXPECT_EQ(bench_method(mesh, "dijkstra")["state_bytes_per_vertex"].type, JsonValue::null);
 }
 
+// The threaded methods: the same distances as one thread up to GSP's order effects (their MRE
+// against exact no worse than gsp's by 0.01 percentage points), and the JSON's speed-up and
+// per-round overhead.
+TEST(BenchApp, ThreadedMethodsReportSpeedupAndOverhead) {
+  ScratchDir dir("bench");
+  const auto r = run_bench(quote(sample_fertility()) + " --sources 2 --repetitions 1 --methods gsp,gsp-2threads,exact" +
+                               " --json " + quote((dir / "b.json").string()),
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue doc = parse_json(gsp::test::slurp(dir / "b.json"));
+  const JsonValue& gsp = bench_method(bench_mesh(doc, "fertility.off"), "gsp");
+  const JsonValue& two = bench_method(bench_mesh(doc, "fertility.off"), "gsp-2threads");
+  EXPECT_EQ(two["threads"].num, 2);
+  EXPECT_GT(two["speedup"].num, 0.0);
+  EXPECT_NEAR(two["speedup"].num, 1 / two["vs_gsp"].num, 1e-9);
+  EXPECT_EQ(two["overhead_per_round_us"].type, JsonValue::number);
+  EXPECT_LE(two["mre"].num, gsp["mre"].num + 1e-4);   // no worse by 0.01 percentage points
+}
+
 TEST(BenchApp, SameSourcesForEveryMethodAndRun) {
   ScratchDir dir("bench");
   const std::string common = quote(sample_fertility()) + " --sources 3 --repetitions 1 --no-table --methods " +

@@ -142,6 +142,20 @@ cli::Json to_json(const Report& report) {
       j["vs_heat_idt"] = number_or_null(s.vs_heat_idt);
       j["vs_gsp"] = number_or_null(s.vs_gsp);
       if (is_gsp(m.method.id) && m.ok()) j["intrinsic_flips"] = m.intrinsic_flips;
+      if ((m.method.id == Method::gsp_2threads || m.method.id == Method::gsp_4threads) && m.ok()) {
+        // The parallel propagation against one thread: the speed-up, and the time beyond
+        // perfect scaling per dual-queue round (thread start, messages, waiting), in us.
+        const unsigned threads = m.method.id == Method::gsp_2threads ? 2 : 4;
+        double rounds = 0;
+        std::size_t n = 0;
+        for (const SourceRun& r : m.sources)
+          if (r.has_stats) rounds += double(r.stats.iterations), ++n;
+        const double one = s.query_s / s.vs_gsp;   // gsp's query time
+        j["threads"] = threads;
+        j["speedup"] = number_or_null(1 / s.vs_gsp);
+        j["overhead_per_round_us"] =
+            number_or_null(n && rounds > 0 ? 1e6 * (s.query_s - one / threads) / (rounds / double(n)) : kNaN);
+      }
       if (m.method.id == Method::points_gsp) {
         // The bar: point-cloud GSP's MRE against Dijkstra's on the same k-NN graph.
         const MethodRun* d = find(run, Method::points_dijkstra);
