@@ -10,7 +10,10 @@ using test::check_remesh;
 
 TEST(CvtRemesh, CamelheadDisk) {
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
-  check_remesh(io::read_mesh(test::shared_mesh("camelhead.off")).mesh, 2000, {12.0, 0.004, 0.013});
+  // Minimum angle: 12.x with the initial sites of the first sampler, 11.3 since the sampler
+  // tries its candidates in batches in layout order (other initial sites; the minimum sits at
+  // the mouth slit and moves with them).
+  check_remesh(io::read_mesh(test::shared_mesh("camelhead.off")).mesh, 2000, {11.0, 0.004, 0.013});
 }
 
 TEST(CvtRemesh, BunnyFiveHoles) {
