@@ -74,15 +74,8 @@ lines::LineSource polyline_file_source(const std::string& path, const TriangleMe
 }
 
 void report(cli::Context& ctx, const lines::LineSource& src, const lines::LineResult& r) {
-  std::size_t reached = 0;
-  double max_d = 0, sum = 0;
-  for (double d : r.vertex_distance)
-    if (std::isfinite(d)) ++reached, sum += d, max_d = std::max(max_d, d);
+  report_distances(ctx, r.vertex_distance);
   cli::Json& res = ctx.stats()["result"];
-  res["vertices_reached"] = reached;
-  res["vertices_unreached"] = r.vertex_distance.size() - reached;
-  res["max_distance"] = max_d;
-  res["mean_distance"] = reached ? sum / double(reached) : 0.0;
   res["segments"] = r.stats.segments;
   res["pieces"] = r.stats.pieces;
   res["faces_seeded"] = r.stats.faces_seeded;

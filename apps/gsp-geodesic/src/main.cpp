@@ -27,15 +27,7 @@ using namespace gsp;
 using namespace gsp::geodesic_app;
 
 void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces) {
-  std::size_t reached = 0;
-  double max_d = 0, sum = 0;
-  for (double d : r.vertex_distance)
-    if (std::isfinite(d)) ++reached, sum += d, max_d = std::max(max_d, d);
-  cli::Json& res = ctx.stats()["result"];
-  res["vertices_reached"] = reached;
-  res["vertices_unreached"] = r.vertex_distance.size() - reached;
-  res["max_distance"] = max_d;
-  res["mean_distance"] = reached ? sum / double(reached) : 0.0;
+  report_distances(ctx, r.vertex_distance);
   cli::Json& ops = ctx.operations();
   ops["update_steps"] = r.stats.update_steps;
   ops["face_updates"] = r.stats.face_updates;

@@ -3,6 +3,7 @@
 #include <gsp/io/colormap.hpp>
 #include <gsp/io/mesh_io.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gsp::geodesic_app {
@@ -32,6 +33,18 @@ void write_field(const std::string& path, const cli::LoadedMesh& in, const std::
   io::WriteOptions options;
   options.ascii = ascii;
   io::write_mesh(path, in.file_mesh(), attributes, options);
+}
+
+void report_distances(cli::Context& ctx, const std::vector<double>& distance) {
+  std::size_t reached = 0;
+  double max_d = 0, sum = 0;
+  for (double d : distance)
+    if (std::isfinite(d)) ++reached, sum += d, max_d = std::max(max_d, d);
+  cli::Json& res = ctx.stats()["result"];
+  res["vertices_reached"] = reached;
+  res["vertices_unreached"] = distance.size() - reached;
+  res["max_distance"] = max_d;
+  res["mean_distance"] = reached ? sum / double(reached) : 0.0;
 }
 
 }  // namespace gsp::geodesic_app
