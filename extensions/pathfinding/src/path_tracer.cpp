@@ -83,10 +83,6 @@ class Walk {
     if (!out_.points.empty() && distance(out_.points.back().position, w.position) <= eps_) return;
     out_.points.push_back({w.face, w.bary, w.position});
   }
-  void shorten();
-  void drop_face_bends();
-  void pull_taut();
-  bool unpin_vertices();
 
   // The straight walk from w towards its target: the parameter t in [0, 1] where it leaves the
   // face and through which corner's opposite edge (-1: the target is inside the face).
@@ -99,17 +95,6 @@ class Walk {
     int corner;
     Bary bs;
     return exit_of(o, t, corner, bs) && (corner < 0 || t > 1e-9);
-  }
-  // The face's own source (reached inside the face) is a real source: the face's corners are
-  // about as near the sources as the field says the source point is.
-  bool genuine_source(const Walker& w) const {
-    const Triangle& t = mesh_.triangles[w.face];
-    double edge = 0, nearest = kInf;
-    for (int i = 0; i < 3; ++i) {
-      edge = std::max(edge, distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]));
-      if (t[i] < field_.vertex_distance.size()) nearest = std::min(nearest, field_.vertex_distance[t[i]]);
-    }
-    return nearest <= w.sigma + 1.5 * edge + 10 * eps_;
   }
   enum class VertexStep { moved, source, keep, stuck };
   VertexStep at_vertex(Index v, Walker& w);
@@ -309,23 +294,6 @@ GeodesicPath Walk::run(const Endpoint& end) {
     Walker next = w;
     next.bary = bq;
     next.position = point(w.face, bq);
-    if (exit_corner < 0 && w.own && (w.sigma <= eps_ || bq[top] < 1 - kCornerSnap) && !genuine_source(w)) {
-      // The face's source lies inside the face only in an unfolding that overlaps itself (the
-      // face was reached the long way round a curved part): no real source is here. Go on
-      // from the face's corner nearest to the sources; the shortening straightens the detour.
-      const Triangle& t = mesh_.triangles[w.face];
-      int best = 0;
-      for (int i = 1; i < 3; ++i)
-        if (field_.vertex_distance[t[i]] < field_.vertex_distance[t[best]]) best = i;
-      next.bary = {0, 0, 0};
-      next.bary[best] = 1;
-      next.position = mesh_.positions[t[best]];
-      emit(next);
-      w = next;
-      w.sigma = kInf;
-      step_vertex(t[best]);
-      continue;
-    }
     if (exit_corner < 0) {
       // Reached the target inside (or on the border of) the face.
       next.position = w.target;
@@ -390,264 +358,13 @@ GeodesicPath Walk::run(const Endpoint& end) {
         polyline_length(other) < polyline_length(out_.points))
       out_.points.swap(other);
   } else {
-    pull_taut();
+    // No sleeve (the walk passes a vertex whose fan has a non-manifold edge or a boundary
+    // between the two faces): the walk as it is, in source-to-end order (consecutive points
+    // still share a face; each point's barycentrics are in its own face).
     std::reverse(out_.points.begin(), out_.points.end());
   }
   out_.length = polyline_length(out_.points);
   return out_;
-}
-
-// The walk follows approximate virtual sources, so it can zig-zag a little. Pull it taut
-// within the faces it runs through: every point where the path crosses an edge between two
-// faces slides along that edge to the spot where the two segments unfold into a straight line
-// (clamped to the edge), sweeping until nothing moves; points at vertices stay.
-void Walk::pull_taut() {
-  drop_face_bends();
-  shorten();
-  for (int round = 0; round < 64 && unpin_vertices(); ++round) {
-    drop_face_bends();
-    shorten();
-  }
-}
-
-// A point strictly inside a face where the path bends (the walk switched from a carried source
-// to the face's own there) is never part of a geodesic: the segments before and after it lie in
-// the same face, so the straight segment between their other ends does too. Points at vertices
-// stay (they may be true corners; unpin_vertices decides).
-void Walk::drop_face_bends() {
-  std::vector<PathPoint>& pts = out_.points;
-  if (pts.size() < 3) return;
-  std::vector<PathPoint> kept;
-  kept.reserve(pts.size());
-  kept.push_back(pts.front());
-  for (std::size_t k = 1; k + 1 < pts.size(); ++k) {
-    const bool same_face = pts[k].face == pts[k + 1].face;
-    bool at_vertex = false;
-    for (Index v : mesh_.triangles[pts[k].face])
-      at_vertex |= distance(mesh_.positions[v], pts[k].position) <= 10 * eps_;
-    if (same_face && !at_vertex) continue;
-    kept.push_back(pts[k]);
-  }
-  kept.push_back(pts.back());
-  pts.swap(kept);
-}
-
-// A path point at a vertex v that the path wraps round by less than pi on one side is no true
-// corner (a geodesic bends only where it must, at vertices with more than pi on both sides):
-// replace it by points on the edges of that side's fan, for shorten() to pull straight.
-bool Walk::unpin_vertices() {
-  std::vector<PathPoint>& pts = out_.points;
-  bool changed = false;
-  std::vector<PathPoint> result;
-  result.reserve(pts.size());
-  auto angle = [](Vec3 a, Vec3 b) { return std::atan2(norm(gsp::cross(a, b)), dot(a, b)); };
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    result.push_back(pts[k]);
-    if (k == 0 || k + 1 == pts.size()) continue;
-    const Index fin = pts[k].face, fout = pts[k + 1].face;
-    Index v = kInvalidIndex;
-    for (Index c = 0; c < 3; ++c)
-      if (distance(mesh_.positions[mesh_.triangles[fin][c]], pts[k].position) <= 10 * eps_) v = mesh_.triangles[fin][c];
-    if (v == kInvalidIndex || fin == fout) continue;
-    const Vec3 pv = mesh_.positions[v];
-    const Vec3 to_prev = pts[k - 1].position - pv, to_next = pts[k + 1].position - pv;
-    if (!(norm(to_prev) > eps_) || !(norm(to_next) > eps_)) continue;
-    // Both ways round v from fin to fout, over manifold edges only.
-    for (int dir = 0; dir < 2; ++dir) {
-      std::vector<std::pair<Index, Index>> crossings;   // (other end u of the edge, face after it)
-      Index f = fin;
-      Index corner = 0;
-      while (mesh_.triangles[f][corner] != v) ++corner;
-      // The edge through v to leave f by: v -> next corner (dir 0) or prev corner -> v (dir 1).
-      Index h = dir == 0 ? 3 * f + corner : prev_halfedge(3 * f + corner);
-      double total = 0;
-      Vec3 from = to_prev;
-      bool ok = false;
-      for (std::size_t guard = 0; guard < 64; ++guard) {
-        const Index u = from_vertex(mesh_, h) == v ? to_vertex(mesh_, h) : from_vertex(mesh_, h);
-        const Vec3 edge = mesh_.positions[u] - pv;
-        total += angle(from, edge);
-        const Index g = conn_.radial_next[h];
-        if (g == h || conn_.radial_next[g] != h || !usable(face_of(g))) break;
-        const Index fg = face_of(g);
-        crossings.push_back({u, fg});
-        from = edge;
-        if (fg == fout) {
-          total += angle(from, to_next);
-          ok = true;
-          break;
-        }
-        // Leave fg by its other edge through v.
-        const Index gv = from_vertex(mesh_, g) == v ? g : next_halfedge(g);
-        h = gv == g ? prev_halfedge(g) : next_halfedge(g);
-        if (from_vertex(mesh_, h) != v && to_vertex(mesh_, h) != v) break;
-      }
-      if (!ok || !(total < M_PI - 1e-6)) continue;
-      result.pop_back();
-      for (auto [u, fg] : crossings) {
-        PathPoint q;
-        q.face = fg == crossings.front().second ? fin : fg;
-        q.position = pv + 0.5 * (mesh_.positions[u] - pv);
-        result.push_back(q);
-      }
-      // Each inserted point's face is the one its incoming segment lies in.
-      for (std::size_t j = 0; j < crossings.size(); ++j)
-        result[result.size() - crossings.size() + j].face = j == 0 ? fin : crossings[j - 1].second;
-      changed = true;
-      break;
-    }
-  }
-  if (changed) {
-    for (PathPoint& q : result) {
-      Bary b;
-      if (bary_of(q.face, q.position, b)) q.barycentric = b;
-    }
-    pts.swap(result);
-  }
-  return changed;
-}
-
-void Walk::shorten() {
-  std::vector<PathPoint>& pts = out_.points;
-  const std::size_t n = pts.size();
-  if (n < 3) return;
-  struct Slide {
-    std::size_t k;
-    Index in, out, a, b;
-  };
-  std::vector<Slide> slides;
-  for (std::size_t k = 1; k + 1 < n; ++k) {
-    const Index fin = pts[k].face, fout = pts[k + 1].face;
-    if (fin == fout) continue;
-    const Triangle& ti = mesh_.triangles[fin];
-    const Triangle& to = mesh_.triangles[fout];
-    Index shared[3], m = 0;
-    for (Index v : ti)
-      if ((v == to[0] || v == to[1] || v == to[2]) && m < 3) shared[m++] = v;
-    if (m != 2) continue;
-    const Vec3 pa = mesh_.positions[shared[0]], pb = mesh_.positions[shared[1]];
-    const double len = distance(pa, pb);
-    if (!(len > 0)) continue;
-    const double along = dot(pts[k].position - pa, (1.0 / len) * (pb - pa));
-    if (along <= 10 * eps_ || along >= len - 10 * eps_) continue;   // at a vertex: pinned
-    slides.push_back({k, fin, fout, shared[0], shared[1]});
-  }
-  auto third = [&](Index f, Index a, Index b) {
-    for (Index v : mesh_.triangles[f])
-      if (v != a && v != b) return mesh_.positions[v];
-    return mesh_.positions[a];
-  };
-  // First, per run of consecutive sliding points between two fixed ones: unfold the faces they
-  // cross into one plane and put each point where the straight line crosses its edge (the
-  // exact answer when the line stays inside the strip; clamped otherwise, then polished below).
-  using P2 = std::array<double, 2>;
-  auto cross2 = [](P2 a, P2 b) { return a[0] * b[1] - a[1] * b[0]; };
-  for (std::size_t r0 = 0; r0 < slides.size();) {
-    std::size_t r1 = r0;
-    while (r1 + 1 < slides.size() && slides[r1 + 1].k == slides[r1].k + 1 && slides[r1 + 1].in == slides[r1].out) ++r1;
-    // 2D positions of the current face's corners, face by face along the strip.
-    std::vector<std::pair<P2, P2>> edges2;   // per slide: its edge (a, b) in the plane
-    const Slide& first = slides[r0];
-    const Vec3 pa = mesh_.positions[first.a], pb = mesh_.positions[first.b];
-    const double len0 = distance(pa, pb);
-    const Vec3 ex = (1.0 / len0) * (pb - pa);
-    auto local = [&](Vec3 x, Vec3 origin, Vec3 ux, Vec3 uy) { return P2{dot(x - origin, ux), dot(x - origin, uy)}; };
-    const Vec3 cin = third(first.in, first.a, first.b);
-    Vec3 yin = (cin - pa) - dot(cin - pa, ex) * ex;
-    yin = (1.0 / std::max(norm(yin), 1e-300)) * yin;
-    // The corners of the face being unfolded, 3D index -> 2D.
-    Index fv[3] = {first.a, first.b, kInvalidIndex};
-    P2 f2[3] = {P2{0, 0}, P2{len0, 0}, local(cin, pa, ex, yin)};
-    for (Index v : mesh_.triangles[first.in])
-      if (v != first.a && v != first.b) fv[2] = v;
-    Bary b0;
-    const std::size_t k0 = first.k - 1;
-    bool ok = bary_of(first.in, pts[k0].position, b0);
-    P2 start{0, 0};
-    if (ok) {
-      const Triangle& t = mesh_.triangles[first.in];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (t[i] == fv[j]) start[0] += b0[i] * f2[j][0], start[1] += b0[i] * f2[j][1];
-    }
-    P2 end{0, 0};
-    for (std::size_t r = r0; ok && r <= r1; ++r) {
-      const Slide& sl = slides[r];
-      P2 a2{}, b2{}, cprev{};
-      for (int j = 0; j < 3; ++j) {
-        if (fv[j] == sl.a) a2 = f2[j];
-        else if (fv[j] == sl.b) b2 = f2[j];
-        else cprev = f2[j];
-      }
-      edges2.push_back({a2, b2});
-      // Unfold the next face across (a, b), away from the previous face's third corner.
-      const Vec3 A = mesh_.positions[sl.a], B = mesh_.positions[sl.b], C = third(sl.out, sl.a, sl.b);
-      const double l = distance(A, B);
-      const Vec3 u = (1.0 / l) * (B - A);
-      const double along = dot(C - A, u), height = norm((C - A) - along * u);
-      const P2 u2{(b2[0] - a2[0]) / l, (b2[1] - a2[1]) / l};
-      P2 n2{-u2[1], u2[0]};
-      if (cross2(u2, P2{cprev[0] - a2[0], cprev[1] - a2[1]}) > 0) n2 = P2{u2[1], -u2[0]};
-      Index cv = kInvalidIndex;
-      for (Index v : mesh_.triangles[sl.out])
-        if (v != sl.a && v != sl.b) cv = v;
-      fv[0] = sl.a, fv[1] = sl.b, fv[2] = cv;
-      f2[0] = a2, f2[1] = b2, f2[2] = P2{a2[0] + along * u2[0] + height * n2[0], a2[1] + along * u2[1] + height * n2[1]};
-    }
-    Bary b1;
-    const Slide& last = slides[r1];
-    ok = ok && bary_of(last.out, pts[last.k + 1].position, b1);
-    if (ok) {
-      const Triangle& t = mesh_.triangles[last.out];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          if (t[i] == fv[j]) end[0] += b1[i] * f2[j][0], end[1] += b1[i] * f2[j][1];
-      const P2 d{end[0] - start[0], end[1] - start[1]};
-      for (std::size_t r = r0; r <= r1; ++r) {
-        const auto& [a2, b2] = edges2[r - r0];
-        const P2 e{b2[0] - a2[0], b2[1] - a2[1]};
-        const double den = cross2(e, d);
-        if (!(std::abs(den) > 0)) continue;
-        const double s_edge = std::min(1.0, std::max(0.0, cross2(P2{start[0] - a2[0], start[1] - a2[1]}, d) / den));
-        const Slide& sl = slides[r];
-        pts[sl.k].position = mesh_.positions[sl.a] + s_edge * (mesh_.positions[sl.b] - mesh_.positions[sl.a]);
-      }
-    }
-    r0 = r1 + 1;
-  }
-  for (int sweep = 0; sweep < 2000 && !slides.empty(); ++sweep) {
-    double moved = 0;
-    for (const Slide& sl : slides) {
-      const Vec3 pa = mesh_.positions[sl.a], pb = mesh_.positions[sl.b];
-      const double len = distance(pa, pb);
-      const Vec3 ex = (1.0 / len) * (pb - pa);
-      auto normal_dir = [&](Vec3 c) {
-        const Vec3 y = (c - pa) - dot(c - pa, ex) * ex;
-        const double l = norm(y);
-        return l > 0 ? (1.0 / l) * y : Vec3{};
-      };
-      const Vec3 yi = normal_dir(third(sl.in, sl.a, sl.b)), yo = normal_dir(third(sl.out, sl.a, sl.b));
-      const Vec3 prev = pts[sl.k - 1].position, next = pts[sl.k + 1].position;
-      const double xp = dot(prev - pa, ex), yp = std::max(0.0, dot(prev - pa, yi));
-      const double xn = dot(next - pa, ex), yn = std::max(0.0, dot(next - pa, yo));
-      const double x = yp + yn > 0 ? xp + (xn - xp) * yp / (yp + yn) : 0.5 * (xp + xn);
-      const double c = std::min(len, std::max(0.0, x));
-      const Vec3 q = pa + c * ex;
-      moved = std::max(moved, distance(q, pts[sl.k].position));
-      pts[sl.k].position = q;
-    }
-    if (moved <= 1e-3 * eps_) break;
-  }
-  for (const Slide& sl : slides) {
-    Bary b;
-    if (bary_of(pts[sl.k].face, pts[sl.k].position, b)) {
-      for (double& x : b) x = std::max(0.0, x);
-      const double sum = b[0] + b[1] + b[2];
-      for (double& x : b) x /= sum;
-      pts[sl.k].barycentric = b;
-      pts[sl.k].position = point(pts[sl.k].face, b);
-    }
-  }
 }
 
 double mean_edge_length(const TriangleMesh& mesh) {
