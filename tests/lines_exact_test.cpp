@@ -22,9 +22,8 @@ namespace {
 
 TriangleMesh fertility() { return io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh; }
 
-// The boundary of the faces whose corners are all within `hops` edges of `center`: on a benign
-// mesh a closed loop of mesh edges (checked: every loop vertex has two loop edges, one cycle).
-std::vector<Index> edge_loop_around(const TriangleMesh& m, Index center, int hops) {
+// Per vertex, the number of edges from `center` (breadth first, up to `hops`; -1 beyond).
+std::vector<int> hops_from(const TriangleMesh& m, Index center, int hops) {
   std::vector<std::set<Index>> adj(m.num_vertices());
   for (const Triangle& t : m.triangles)
     for (int i = 0; i < 3; ++i) adj[t[i]].insert(t[(i + 1) % 3]), adj[t[(i + 1) % 3]].insert(t[i]);
@@ -38,6 +37,13 @@ std::vector<Index> edge_loop_around(const TriangleMesh& m, Index center, int hop
         if (hop[w] < 0) hop[w] = h, next.push_back(w);
     front = next;
   }
+  return hop;
+}
+
+// The boundary of the faces whose corners are all within `hops` edges of `center`: on a benign
+// mesh a closed loop of mesh edges (checked: every loop vertex has two loop edges, one cycle).
+std::vector<Index> edge_loop_around(const TriangleMesh& m, Index center, int hops) {
+  const std::vector<int> hop = hops_from(m, center, hops);
   std::map<std::pair<Index, Index>, int> count;   // undirected edge -> faces of the region
   for (const Triangle& t : m.triangles) {
     if (hop[t[0]] < 0 || hop[t[1]] < 0 || hop[t[2]] < 0) continue;
@@ -164,19 +170,7 @@ TEST(LinesExact, SnappedPolylineOnFertility) {
 // The faces of m whose corners are all within `hops` edges of `center`, as a mesh of its own:
 // an open, curved patch.
 TriangleMesh patch(const TriangleMesh& m, Index center, int hops) {
-  std::vector<std::set<Index>> adj(m.num_vertices());
-  for (const Triangle& t : m.triangles)
-    for (int i = 0; i < 3; ++i) adj[t[i]].insert(t[(i + 1) % 3]), adj[t[(i + 1) % 3]].insert(t[i]);
-  std::vector<int> hop(m.num_vertices(), -1);
-  std::vector<Index> front{center};
-  hop[center] = 0;
-  for (int h = 1; h <= hops; ++h) {
-    std::vector<Index> next;
-    for (Index v : front)
-      for (Index w : adj[v])
-        if (hop[w] < 0) hop[w] = h, next.push_back(w);
-    front = next;
-  }
+  const std::vector<int> hop = hops_from(m, center, hops);
   TriangleMesh out;
   std::vector<Index> index(m.num_vertices(), kInvalidIndex);
   for (const Triangle& t : m.triangles) {
