@@ -185,7 +185,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
                                          const GeodesicOptions& options) const {
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
-  std::vector<FaceRecord<Real>> state = tri.records<Real>(scale, flat);   // this query's copy
+  std::vector<FaceRecord<Real>> state = take_state(tri.records<Real>(scale, flat));   // this query's copy
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
@@ -204,55 +204,73 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   result.stats.enqueued = queue.size();
   propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr);
 
-  // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces.
-  std::vector<double> vdist(nv, std::numeric_limits<double>::infinity());
+  // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces,
+  // taken in the propagation's precision (the conversion to model units is monotonic, so the
+  // minimum and its label are those of the converted values). Per block of faces two passes:
+  // the corner distances, branch-free so the compiler vectorises them (an unreached face has
+  // sigma = +inf and gives +inf), then the minima, also without branches: which face wins a
+  // vertex is a coin toss the branch predictor loses.
+  const Real inf = std::numeric_limits<Real>::infinity();
+  std::vector<Real> vmin(nv, inf);
   std::vector<Index> vlabel(nv, kInvalidIndex);
-  for (const VertexSeed& vs : vertex_seeds)
-    if (vs.value < vdist[vs.vertex]) vdist[vs.vertex] = vs.value, vlabel[vs.vertex] = vs.label;
-  for (std::size_t fi = 0; fi < nf; ++fi) {
-    const FaceRecord<Real>& st = state[fi];
-    if (!st.reached()) continue;
-    ++result.stats.faces_reached;
-    const Triangle& t = tri.triangles[fi];
-    for (Index i = 0; i < 3; ++i) {
-      const double d = double(corner_distance(st, i)) * mean_edge;
-      if (d < vdist[t[i]]) {
-        vdist[t[i]] = d;
-        vlabel[t[i]] = st.source();
+  std::size_t faces_reached = 0;
+  constexpr std::size_t kBlock = 256;
+  Real corner[3 * kBlock];
+  for (std::size_t begin = 0; begin < nf; begin += kBlock) {
+    const std::size_t end = std::min(nf, begin + kBlock);
+    for (std::size_t fi = begin; fi < end; ++fi) corner_distances(state[fi], &corner[3 * (fi - begin)]);
+    for (std::size_t fi = begin; fi < end; ++fi) {
+      const bool reached = state[fi].reached();
+      faces_reached += reached;
+      const Index label = reached ? state[fi].source() : kInvalidIndex;
+      const Triangle& t = tri.triangles[fi];
+      for (Index i = 0; i < 3; ++i) {
+        const Real d = corner[3 * (fi - begin) + i];
+        const bool better = d < vmin[t[i]];
+        vmin[t[i]] = better ? d : vmin[t[i]];
+        vlabel[t[i]] = better ? label : vlabel[t[i]];
       }
     }
   }
+  result.stats.faces_reached = faces_reached;
+  std::vector<double> vdist(nv);
+  for (std::size_t v = 0; v < nv; ++v) vdist[v] = double(vmin[v]) * mean_edge;
+  // A vertex source's own value is exact and wins ties (against faces, and the first source
+  // against later ones at the same vertex: hence backwards).
+  for (auto vs = vertex_seeds.rbegin(); vs != vertex_seeds.rend(); ++vs)
+    if (vs->value <= vdist[vs->vertex]) vdist[vs->vertex] = vs->value, vlabel[vs->vertex] = vs->label;
+  // Results in the input's order, gathered (sequential writes, reads in layout order).
   const double cutoff = options.max_distance;
   result.vertex_distance.resize(nv);
   result.vertex_source.resize(nv);
-  for (std::size_t v = 0; v < nv; ++v) {
-    const Index in = layout.vertex_order[v];
+  for (std::size_t in = 0; in < nv; ++in) {
+    const Index v = layout.vertex_rank[in];
     const bool keep = vdist[v] <= cutoff;
     result.vertex_distance[in] = keep ? vdist[v] : std::numeric_limits<double>::infinity();
     result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
   }
-  result.face_distance.resize(nf);
-  result.face_source.resize(nf);
-  if (&tri == &input) {
-    for (std::size_t fi = 0; fi < nf; ++fi) {
-      const Index in = layout.face_order[fi];
-      const FaceRecord<Real>& st = state[fi];
-      result.face_distance[in] = st.reached() ? double(st.dT) * mean_edge : std::numeric_limits<double>::infinity();
-      result.face_source[in] = st.reached() ? st.source() : kInvalidIndex;
-    }
-  } else {
-    // The propagation ran on other faces: an input face gets the mean of its corners'
-    // distances and the label of its nearest corner.
-    for (std::size_t fi = 0; fi < nf; ++fi) {
-      const Triangle& t = mesh.triangles[fi];
-      const Index in = layout.face_order[fi];
-      int best = 0;
-      for (int i = 1; i < 3; ++i)
-        if (vdist[t[i]] < vdist[t[best]]) best = i;
-      const double mean = (vdist[t[0]] + vdist[t[1]] + vdist[t[2]]) / 3;
-      const bool reached = std::isfinite(mean) && mean <= cutoff;
-      result.face_distance[in] = reached ? mean : std::numeric_limits<double>::infinity();
-      result.face_source[in] = reached ? vlabel[t[best]] : kInvalidIndex;
+  if (options.want_face_distances) {
+    result.face_distance.resize(nf);
+    result.face_source.resize(nf);
+    for (std::size_t in = 0; in < nf; ++in) {
+      const Index fi = layout.face_rank[in];
+      double d = std::numeric_limits<double>::infinity();
+      Index label = kInvalidIndex;
+      if (&tri == &input) {
+        const FaceRecord<Real>& st = state[fi];
+        if (st.reached()) d = double(st.dT) * mean_edge, label = st.source();
+      } else {
+        // The propagation ran on other faces: an input face gets the mean of its corners'
+        // distances and the label of its nearest corner.
+        const Triangle& t = mesh.triangles[fi];
+        int best = 0;
+        for (int i = 1; i < 3; ++i)
+          if (vdist[t[i]] < vdist[t[best]]) best = i;
+        const double mean = (vdist[t[0]] + vdist[t[1]] + vdist[t[2]]) / 3;
+        if (std::isfinite(mean) && mean <= cutoff) d = mean, label = vlabel[t[best]];
+      }
+      result.face_distance[in] = d;
+      result.face_source[in] = label;
     }
   }
   if (options.want_face_sources) {
@@ -266,6 +284,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
       vs.source = st.source();
     }
   }
+  return_state(std::move(state));
   return result;
 }
 

@@ -64,6 +64,12 @@ class UpdateStep {
 
   bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
+  // Starts loading the record an entry will update first (the face across its edge): on
+  // meshes whose state outgrows the L2 cache that load is the step's main stall.
+  void prefetch(const QueueEntry<Real>& e) const {
+    __builtin_prefetch(&faces_[face_of(ring_[e.halfedge] & kRingIndexMask)]);
+  }
+
   // Propagates the virtual source of the entry's face over its halfedge into every other face
   // of the edge's radial ring; push(entry) receives the entries of each improved face.
   template <class Push>
@@ -208,6 +214,8 @@ Real min_key(const std::vector<QueueEntry<Real>>& q) {
   return m;
 }
 
+inline constexpr std::size_t kPrefetchDistance = 8;
+
 // Speed limiter with a lean queue: the current queue grows while it is walked; an improved
 // face stays in this round while its distance is below the round's limit.
 template <class Real>
@@ -220,6 +228,7 @@ void run_speed_limiter(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a,
     ++stats.iterations;
     for (std::size_t i = 0; i < a.size(); ++i) {
       const QueueEntry<Real> e = a[i];
+      if (i + kPrefetchDistance < a.size()) step.prefetch(a[i + kPrefetchDistance]);
       step.expand(e, [&](const QueueEntry<Real>& n) {
         ++stats.enqueued;
         if (n.dT < limit) a.push_back(n); else b.push_back(n);

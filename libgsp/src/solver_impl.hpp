@@ -103,6 +103,32 @@ struct GeodesicSolver::Impl {
   VisibilityHeuristic heuristic;
   SolverTimings timings;
 
+  // The state buffer of the last finished full query, kept for the next one: refilling a
+  // buffer whose pages are mapped costs a copy; a fresh one also costs a page fault per 4 KiB
+  // (about 5% of a query on a large mesh). One per precision, so a pool of concurrent
+  // queries (compute_many) keeps at most one extra buffer.
+  struct SpareState {
+    std::mutex mutex;
+    std::vector<FaceRecord<float>> single;
+    std::vector<FaceRecord<double>> twice;
+  };
+  mutable SpareState spare;
+  template <class Real>
+  std::vector<FaceRecord<Real>> take_state(const std::vector<FaceRecord<Real>>& initial) const {
+    std::vector<FaceRecord<Real>> state;
+    {
+      std::lock_guard<std::mutex> lock(spare.mutex);
+      if constexpr (std::is_same_v<Real, float>) state.swap(spare.single); else state.swap(spare.twice);
+    }
+    state.assign(initial.begin(), initial.end());
+    return state;
+  }
+  template <class Real>
+  void return_state(std::vector<FaceRecord<Real>>&& state) const {
+    std::lock_guard<std::mutex> lock(spare.mutex);
+    if constexpr (std::is_same_v<Real, float>) spare.single = std::move(state); else spare.twice = std::move(state);
+  }
+
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_bridge_vertices();
   void build_delaunay();
@@ -157,5 +183,17 @@ inline Real corner_distance(const FaceRecord<Real>& r, Index corner) {
   return r.sigma + std::sqrt((r.sx - x) * (r.sx - x) + (r.sy - y) * (r.sy - y));
 }
 
+// The three corner distances at once, without branches (for vectorised loops over all faces);
+// +inf for an unreached face (its sigma is +inf). Same values as corner_distance().
+template <class Real>
+inline void corner_distances(const FaceRecord<Real>& r, Real* d) {
+  const Real l0 = r.len[0], l1 = r.len[1], l2 = r.len[2];
+  const bool edge = l0 > 0;
+  const Real x2 = edge ? (l0 * l0 + l2 * l2 - l1 * l1) / (2 * (edge ? l0 : Real(1))) : l2;
+  const Real y2 = edge ? std::sqrt(std::max(Real(0), l2 * l2 - x2 * x2)) : Real(0);
+  d[0] = r.sigma + std::sqrt(r.sx * r.sx + r.sy * r.sy);
+  d[1] = r.sigma + std::sqrt((r.sx - l0) * (r.sx - l0) + r.sy * r.sy);
+  d[2] = r.sigma + std::sqrt((r.sx - x2) * (r.sx - x2) + (r.sy - y2) * (r.sy - y2));
+}
 
 }  // namespace gsp

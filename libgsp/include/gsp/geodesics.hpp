@@ -68,6 +68,9 @@ struct GeodesicOptions {
   // max_distance is reached. Vertices farther than this are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
   bool want_face_sources = false;   // fill GeodesicResult::face_sources
+  // Fill GeodesicResult::face_distance / face_source. A caller that needs per-vertex results
+  // only saves two arrays in face order (about 10% of a query on a large mesh).
+  bool want_face_distances = true;
   // Threads for one propagation (speed_limiter and hybrid_postpone strategies): 0 = automatic
   // (all hardware threads for meshes of at least kParallelMinFaces faces and sources spread
   // enough, see kParallelMinSeedsPerThread; one otherwise and inside an already parallel
