@@ -19,7 +19,7 @@ namespace gsp {
 
 void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vector<double>& edge_lengths) {
   const std::size_t nh = conn.num_halfedges();
-  if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^30 halfedges");
+  if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
   skipped_face.assign(mesh.num_faces(), false);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];

@@ -1,4 +1,5 @@
 #include "intrinsic_geometry.hpp"
+#include "ring_links.hpp"
 
 #include <gsp/errors.hpp>
 
@@ -96,7 +97,7 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vec
       }
       used[t[i]] = 1;
       const Index h = Index(3 * f + i);
-      if ((ring[h] & 0x3fffffffu) == h) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
+      if ((ring[h] & kRingIndexMask) == h) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
     }
   }
   // Tight on purpose: finely tessellated smooth surfaces stored in float (STL tyres) have many

@@ -4,6 +4,7 @@
 // Internal header: templated on the scalar type, instantiated for float and double in
 // geodesic_solver.cpp. The hot loop allocates nothing and calls nothing virtual.
 #include "face_record.hpp"
+#include "ring_links.hpp"
 
 #include <gsp/geodesics.hpp>
 
@@ -17,12 +18,6 @@
 
 namespace gsp::detail {
 
-// Radial links: ring[h] = next halfedge g on h's undirected edge in the low 30 bits,
-// bit 31 = g runs from its smaller to its larger vertex index, bit 30 = the same for h.
-// Two halfedges run the same way (inconsistent orientation) iff their bits are equal.
-inline constexpr Index kRingIndexMask = 0x3fffffffu;
-inline constexpr Index kRingNextDir = 0x80000000u;
-inline constexpr Index kRingSelfDir = 0x40000000u;
 
 // A lean-queue entry: the halfedge of the face to propagate from, and that face's d_T when
 // queued, so entries overtaken by a later update of the face are recognised and skipped.
@@ -91,18 +86,27 @@ class UpdateStep {
     std::uint64_t steps = 0;
     Index link = ring_[h];
     const bool h_dir = (link & kRingSelfDir) != 0;
-    for (Index g = link & kRingIndexMask; g != h; link = ring_[g], g = link & kRingIndexMask) {
+    for (Index g = link & kRingIndexMask; g != h;) {
       ++steps;
-      // A face another thread owns gets the step as a message (parallel runs only).
-      if constexpr (Partitioned) {
-        if (face_of(g) < own_begin_ || face_of(g) >= own_end_) {
-          (*outbox_)[face_of(g) / own_chunk_].push_back({g, link, hx, hy, e1h, sigma, source, h_dir});
-          continue;
-        }
-      }
-      try_update(g, link, h_dir, hx, hy, e1h, sigma, source, push);
+      step_into(g, link, h_dir, hx, hy, e1h, sigma, source, push);
+      if (link & kRingPair) break;
+      link = ring_[g];
+      g = link & kRingIndexMask;
     }
     stats_.update_steps += steps;
+  }
+
+  // The step into the face of halfedge g; a face another thread owns gets it as a message
+  // (parallel runs only).
+  template <class Push>
+  void step_into(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source, Push&& push) {
+    if constexpr (Partitioned) {
+      if (face_of(g) < own_begin_ || face_of(g) >= own_end_) {
+        (*outbox_)[face_of(g) / own_chunk_].push_back({g, link, hx, hy, e1h, sigma, source, h_dir});
+        return;
+      }
+    }
+    try_update(g, link, h_dir, hx, hy, e1h, sigma, source, push);
   }
 
   // One update step: the source (hx, hy in the sending halfedge's edge frame, e1h that edge's

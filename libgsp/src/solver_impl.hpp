@@ -72,7 +72,10 @@ struct Triangulation {
     ring.resize(plain_ring.size());
     for (Index h = 0; h < Index(plain_ring.size()); ++h) {
       const Index g = plain_ring[h];
-      ring[h] = g == h ? h : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0));
+      const bool pair = g != h && plain_ring[g] == h;
+      ring[h] = g == h ? h
+                       : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0) |
+                          (pair ? detail::kRingPair : 0));
     }
   }
 
