@@ -26,6 +26,7 @@ using namespace gsp;
 struct Options {
   std::string input, output, from, method = "astar", precision = "single";
   std::vector<std::string> to;
+  bool one_end = false;
   render::PreviewRequest preview;
   cli::LoadOptions load;
 };
@@ -41,6 +42,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--method", o.method, "astar (default: goal-directed, stops at the targets), settle "
                  "(Dijkstra order, stops at the targets), full (whole mesh), dijkstra-edges (along edges)")
       ->check(CLI::IsMember({"astar", "settle", "full", "dijkstra-edges"}));
+  app.add_flag("--one-end", o.one_end, "trace from --from's field only (half the cost; by default every "
+               "--to also propagates back towards --from and the shorter of the two paths is kept)");
   app.add_option("--precision", o.precision, "single (default) or double")->check(CLI::IsMember({"single", "double"}));
   render::add_preview_options(app, o.preview, "the mesh with the paths");
   cli::add_load_options(app, o.load);
@@ -76,6 +79,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   ctx.settings()["method"] = o.method;
   ctx.settings()["precision"] = o.precision;
   ctx.settings()["targets"] = ends.size();
+  ctx.settings()["both_ends"] = !o.one_end && o.method != "dijkstra-edges";
 
   auto build = ctx.timer().scope("build");
   const pathfinding::PathTracer tracer(in.mesh);
@@ -91,6 +95,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
     pathfinding::PathQueryOptions po;
     po.method = method_of(o.method);
     po.precision = o.precision == "double" ? Precision::double_precision : Precision::single;
+    po.both_ends = !o.one_end;
     r = pathfinding::shortest_paths(*solver, tracer, from.endpoint, ends, po);
   }
   ctx.timer().add("compute", r.compute_seconds);
@@ -113,6 +118,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
     list.push_back(std::move(j));
   }
   ctx.stats()["result"]["found"] = r.paths.size() - missing;
+  ctx.stats()["result"]["reversed"] = r.reversed;
   ctx.stats()["result"]["max_snap_distance"] = snapped;
   cli::Json& ops = ctx.operations();
   ops["faces_expanded"] = r.stats.faces_reached;
@@ -120,6 +126,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   ops["faces_expanded_fraction"] = in.mesh.num_faces() ? double(r.stats.faces_reached) / double(in.mesh.num_faces()) : 0.0;
   ops["update_steps"] = r.stats.update_steps;
   ops["iterations"] = r.stats.iterations;
+  ops["reverse_faces_expanded"] = r.reverse_stats.faces_reached;
 
   if (missing == r.paths.size()) return missing;   // nothing to write
   ctx.timer().time("write", [&] { path_app::write_paths(o.output, r.paths); });

@@ -41,8 +41,8 @@ struct Walker {
 class Walk {
  public:
   Walk(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field, double mean_edge,
-       std::size_t max_steps)
-      : mesh_(mesh), conn_(conn), field_(field), eps_(1e-7 * mean_edge), max_steps_(max_steps) {}
+       std::size_t max_steps, bool shorten)
+      : mesh_(mesh), conn_(conn), field_(field), eps_(1e-7 * mean_edge), max_steps_(max_steps), shorten_(shorten) {}
 
   GeodesicPath run(const Endpoint& end);
 
@@ -105,6 +105,7 @@ class Walk {
   const GeodesicResult& field_;
   double eps_;
   std::size_t max_steps_;
+  bool shorten_;
   GeodesicPath out_;
 };
 
@@ -349,7 +350,7 @@ GeodesicPath Walk::run(const Endpoint& end) {
   std::vector<Index> segment_faces;   // walk order: each point's face holds the segment to it
   for (std::size_t k = out_.points.size(); k-- > 1;) segment_faces.push_back(out_.points[k].face);
   const PathPoint first = out_.points.back(), last = out_.points.front();
-  if (detail::shorten_in_sleeve(mesh_, conn_, first, last, segment_faces, taut)) {
+  if (shorten_ && detail::shorten_in_sleeve(mesh_, conn_, first, last, segment_faces, taut)) {
     out_.points.swap(taut);
     // The route down the field's vertex distances, pulled taut too: keep the shorter.
     std::vector<PathPoint> other;
@@ -358,8 +359,8 @@ GeodesicPath Walk::run(const Endpoint& end) {
         polyline_length(other) < polyline_length(out_.points))
       out_.points.swap(other);
   } else {
-    // No sleeve (the walk passes a vertex whose fan has a non-manifold edge or a boundary
-    // between the two faces): the walk as it is, in source-to-end order (consecutive points
+    // Not shortened, or no sleeve (the walk passes a vertex whose fan has a non-manifold edge
+    // or a boundary between the two faces): the walk as it is, in source-to-end order (consecutive points
     // still share a face; each point's barycentrics are in its own face).
     std::reverse(out_.points.begin(), out_.points.end());
   }
@@ -386,7 +387,7 @@ GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end)
   endpoint_position(mesh_, end);   // validates
   const std::size_t max_steps = options_.max_steps ? options_.max_steps : 2 * mesh_.num_faces() + 64;
   try {
-    return Walk(mesh_, conn_, field, mean_edge_, max_steps).run(end);
+    return Walk(mesh_, conn_, field, mean_edge_, max_steps, options_.shorten).run(end);
   } catch (const NoPath&) {
     throw;
   } catch (const Error&) {
@@ -403,7 +404,7 @@ GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end)
       last.face = end.face, last.barycentric = end.barycentric;
     }
     GeodesicPath path;
-    if (!detail::descent_path(mesh_, conn_, field, last, path)) throw;
+    if (!options_.shorten || !detail::descent_path(mesh_, conn_, field, last, path)) throw;
     path.field_distance = end.is_vertex() ? field.vertex_distance[end.vertex] : field.distance_at(mesh_, end.face, end.barycentric);
     return path;
   }

@@ -1,6 +1,8 @@
 #include <gsp/pathfinding/shortest_path.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <exception>
 
 namespace gsp::pathfinding {
 
@@ -13,35 +15,141 @@ Source to_source(const Endpoint& e) {
   return e.is_vertex() ? Source::at_vertex(e.vertex) : Source::in_face(e.face, e.barycentric);
 }
 
-}  // namespace
-
-PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
-                               const std::vector<Endpoint>& to, const PathQueryOptions& options) {
-  if (options.method == PathMethod::dijkstra_edges) throw InvalidInput("use edge_paths() for Dijkstra on edges");
+// The propagation's options for paths to `to`: vertices as they are; a point inside a face is
+// settled once its face's corners are.
+GeodesicOptions field_options(const TriangleMesh& mesh, const std::vector<Endpoint>& to, const PathQueryOptions& options) {
   GeodesicOptions go;
   go.want_face_sources = true;   // the walk back needs every face's virtual source
   go.precision = options.precision;
   if (options.method != PathMethod::full) {
-    // Vertices as they are; a point inside a face is settled once its face's corners are.
     for (const Endpoint& e : to) {
-      endpoint_position(tracer.mesh(), e);   // validates before indexing
+      endpoint_position(mesh, e);   // validates before indexing
       if (e.is_vertex()) {
         go.targets.push_back(e.vertex);
       } else {
-        const Triangle& t = tracer.mesh().triangles[e.face];
+        const Triangle& t = mesh.triangles[e.face];
         go.targets.insert(go.targets.end(), t.begin(), t.end());
       }
     }
     go.goal_directed = options.method == PathMethod::astar && !go.targets.empty();
   }
+  return go;
+}
+
+// Barycentric weights of x (a point of face f: on its plane up to rounding) in f, clamped to
+// >= 0 and summing to 1.
+std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
+  const Triangle& t = mesh.triangles[f];
+  const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = x - a;
+  const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+  const double den = d00 * d11 - d01 * d01;
+  if (!(den > 0)) return {1, 0, 0};
+  std::array<double, 3> b{0, (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den};
+  b[0] = 1 - b[1] - b[2];
+  for (double& w : b) w = std::max(0.0, w);
+  const double sum = b[0] + b[1] + b[2];
+  for (double& w : b) w /= sum;
+  return b;
+}
+
+// A path traced from the end point's field (from the end back to `from`) in from-to-end order.
+// Each point's face holds the segment that ends there, as in a traced path: after reversing,
+// that is the face the old order gave the point after it.
+std::vector<PathPoint> reversed(const TriangleMesh& mesh, const std::vector<PathPoint>& back) {
+  std::vector<PathPoint> out(back.rbegin(), back.rend());
+  for (std::size_t j = out.size(); j-- > 1;) {
+    out[j].face = out[j - 1].face;
+    out[j].barycentric = weights_in(mesh, out[j].face, out[j].position);
+  }
+  return out;
+}
+
+// The traced path starts where the walk found the source: the field's virtual source, stored
+// in single precision by default (about 1e-7 of the model off). Puts it on the source itself.
+void snap_start(const TriangleMesh& mesh, std::vector<PathPoint>& points, const Endpoint& source) {
+  if (points.empty()) return;
+  PathPoint& p = points.front();
+  const Vec3 exact = endpoint_position(mesh, source);
+  const Triangle& t = mesh.triangles[p.face];
+  const double scale = distance(mesh.positions[t[0]], mesh.positions[t[1]]) + distance(mesh.positions[t[1]], mesh.positions[t[2]]);
+  if (!(distance(p.position, exact) <= 1e-4 * scale)) return;
+  p.position = exact;
+  p.barycentric = weights_in(mesh, p.face, exact);
+}
+
+double field_at(const TriangleMesh& mesh, const GeodesicResult& field, const Endpoint& e) {
+  if (e.is_vertex()) return field.vertex_distance[e.vertex];
+  return field.distance_at(mesh, e.face, e.barycentric);
+}
+
+void add_stats(PropagationStats& sum, const PropagationStats& s) {
+  sum.update_steps += s.update_steps;
+  sum.face_updates += s.face_updates;
+  sum.enqueued += s.enqueued;
+  sum.stale_skipped += s.stale_skipped;
+  sum.postponed += s.postponed;
+  sum.iterations += s.iterations;
+  sum.faces_reached += s.faces_reached;
+  sum.mean_edge_length = s.mean_edge_length;
+}
+
+}  // namespace
+
+PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+                               const std::vector<Endpoint>& to, const PathQueryOptions& options) {
+  if (options.method == PathMethod::dijkstra_edges) throw InvalidInput("use edge_paths() for Dijkstra on edges");
+  const TriangleMesh& mesh = tracer.mesh();
+  const GeodesicOptions go = field_options(mesh, to, options);
   PathQueryResult r;
   auto t0 = Clock::now();
   const GeodesicResult field = solver.compute({to_source(from)}, go);
   r.compute_seconds = seconds_since(t0);
   r.stats = field.stats;
   t0 = Clock::now();
-  r.paths = tracer.trace_all(field, to);
+  // A walk that cannot be completed in this field (and whose descent fallback fails too) is
+  // kept as an error: the far end's field may still give the path.
+  std::vector<std::exception_ptr> failed(to.size());
+  r.paths.resize(to.size());
+  for (std::size_t k = 0; k < to.size(); ++k) {
+    try {
+      r.paths[k] = tracer.trace(field, to[k]);
+      snap_start(mesh, r.paths[k].points, from);
+      r.paths[k].length = polyline_length(r.paths[k].points);
+    } catch (const NoPath&) {
+      // unreachable: an empty path
+    } catch (const Error&) {
+      if (!options.both_ends) throw;
+      failed[k] = std::current_exception();
+    }
+  }
   r.trace_seconds = seconds_since(t0);
+  if (!options.both_ends) return r;
+  const GeodesicOptions back_options = field_options(mesh, {from}, options);
+  for (std::size_t k = 0; k < to.size(); ++k) {
+    GeodesicPath& path = r.paths[k];
+    if (!failed[k] && (!path.found() || !(path.length > 0))) continue;
+    t0 = Clock::now();
+    const GeodesicResult back_field = solver.compute({to_source(to[k])}, back_options);
+    r.compute_seconds += seconds_since(t0);
+    add_stats(r.reverse_stats, back_field.stats);
+    t0 = Clock::now();
+    try {
+      GeodesicPath back = tracer.trace(back_field, from);
+      snap_start(mesh, back.points, to[k]);
+      if (back.found() && polyline_length(back.points) < path.length) {
+        if (failed[k]) path.field_distance = field_at(mesh, field, to[k]);
+        path.points = reversed(mesh, back.points);
+        path.length = polyline_length(path.points);
+        path.source = 0;
+        failed[k] = nullptr;
+        ++r.reversed;
+      }
+    } catch (const Error&) {
+      // The walk back from `from` failed in this field: the forward path stands.
+    }
+    r.trace_seconds += seconds_since(t0);
+    if (failed[k]) std::rethrow_exception(failed[k]);
+  }
   return r;
 }
 

@@ -28,6 +28,11 @@ struct TraceOptions {
   // cycles in an inconsistent field; a walk that gives up falls back to the route down the
   // field's vertex distances.
   std::size_t max_steps = 0;
+  // Pull the walk taut (sleeve + funnel) and compare it with the descent route. Off: the raw
+  // walk, straight segments towards the per-face virtual sources, as the field explains the
+  // end point's distance (for measuring the field against its own paths; docs/pathfinding.md);
+  // where the walk cannot be completed, trace() throws instead of falling back to the descent.
+  bool shorten = true;
 };
 
 class PathTracer {

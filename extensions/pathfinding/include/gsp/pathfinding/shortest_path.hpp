@@ -27,16 +27,25 @@ enum class PathMethod : std::uint8_t {
 struct PathQueryOptions {
   PathMethod method = PathMethod::astar;
   Precision precision = Precision::single;
+  // Also propagate from every end point back towards `from` (same method), trace that field
+  // from `from`, and keep the shorter of the two taut paths. A path traced from one field
+  // follows that field round a feature; where the field's error picks the longer side near
+  // its cut locus, the other end's field usually does not (docs/pathfinding.md). Costs one
+  // more propagation and trace per end point.
+  bool both_ends = true;
 };
 
 struct PathQueryResult {
   std::vector<GeodesicPath> paths;   // one per end point; empty (found() false) if unreachable
-  PropagationStats stats;            // of the propagation (faces_reached, update_steps, ...)
-  double compute_seconds = 0, trace_seconds = 0;
+  PropagationStats stats;            // of the propagation from `from` (faces_reached, update_steps, ...)
+  PropagationStats reverse_stats;    // summed over the propagations from the end points (both_ends)
+  std::size_t reversed = 0;          // paths taken from the end point's field (shorter than the other)
+  double compute_seconds = 0, trace_seconds = 0;   // both directions together
 };
 
-// Throws InvalidInput for malformed end points (missing vertex or face, bad barycentrics).
-// Unreachable end points give empty paths, never NoPath.
+// Throws InvalidInput for malformed end points (missing vertex or face, bad barycentrics),
+// gsp::Error when a path cannot be traced in any field (PathTracer::trace). Unreachable end
+// points give empty paths, never NoPath.
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
                                const std::vector<Endpoint>& to, const PathQueryOptions& options = {});
 
