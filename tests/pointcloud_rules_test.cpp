@@ -1,6 +1,6 @@
-// The two propagation rules that made point-cloud GSP beat Dijkstra threefold (docs/pointcloud.md):
-// links unfolded with their arc length (chords cut below a curved surface), and steep links
-// (across thin gaps) left out unless nothing else reaches a point.
+// The propagation rules that made point-cloud GSP beat Dijkstra threefold (docs/pointcloud.md):
+// links unfolded with their arc length (chords cut below a curved surface), and steep and gap
+// links (across thin gaps) left out unless nothing else reaches a point.
 #include "helpers/geodesic_fixtures.hpp"
 
 #include <gsp/errors.hpp>
@@ -102,7 +102,52 @@ TEST(PointCloudRules, SteepLinksDoNotShortcutAcrossAGap) {
   // Every link used: the graph's links across the gap carry the front straight through.
   PointGeodesicOptions all_links;
   all_links.steep_link_slope = 1;
+  all_links.gap_link_slope = 1;
   EXPECT_LT(solver.compute({PointSource::at_point(source)}, all_links).distance[below], 2.0);
+}
+
+// The same fold with the sheets 0.24 apart and the lower one shifted by half a spacing in y
+// (a slit narrower than the sampling, like camelhead's lips): the k-NN links across are
+// diagonal, 0.31 long at slope 0.77 and 0.51 long at slope 0.47 at both ends, so none is
+// steep at one end (0.8), every one is steep at both (the gap rule, 0.35).
+TriangleMesh staggered_fold() {
+  TriangleMesh m;
+  for (int y = 0; y < 30; ++y) {
+    for (int side = 0; side < 2; ++side)
+      for (int x = 0; x < 75; ++x) {
+        m.positions.push_back({0.4 * x, 0.4 * y + 0.2 * side, side ? -0.12 : 0.12});
+        m.normals.push_back({0, 0, side ? -1.0 : 1.0});
+      }
+    for (int side = 0; side < 2; ++side)
+      for (int a = 1; a < 6; ++a) {   // 5 points inside the fold (radius 0.12), 30 degrees apart
+        const double t = kPi / 2 - a * kPi / 6;
+        m.positions.push_back({29.6 + 0.12 * std::cos(t), 0.4 * y + 0.2 * side, 0.12 * std::sin(t)});
+        m.normals.push_back({std::cos(t), 0, std::sin(t)});
+      }
+  }
+  return m;
+}
+
+TEST(PointCloudRules, GapLinksDoNotShortcutAcrossANarrowSlit) {
+  const TriangleMesh m = staggered_fold();
+  const PointCloudGeodesics solver(m);
+  // Source 2 from the fold, 6 from the nearest border (where longer links cross at lower
+  // slopes): around the fold is the shortest way to the other sheet.
+  const Index source = Index(15 * 160 + 69);   // (27.6, 6, +0.12)
+  const Index below = source + 75;             // (27.6, 6.2, -0.12)
+  const double around = std::hypot(2 + kPi * 0.12 + 2, 0.2);
+  const auto r = solver.compute({PointSource::at_point(source)});
+  PointGeodesicOptions steep_only;
+  steep_only.gap_link_slope = 1;
+  const double without = solver.compute({PointSource::at_point(source)}, steep_only).distance[below];
+  std::printf("staggered fold: to the point below %.4f (around the fold %.4f; steep rule only %.4f)\n",
+              r.distance[below], around, without);
+  EXPECT_NEAR(r.distance[below], around, 0.02 * around);
+  EXPECT_EQ(r.stats.steep_links_used, 0u);
+  EXPECT_LT(without, 1.0);   // the steep rule alone lets the front through the slit
+  PointGeodesicOptions bad;
+  bad.gap_link_slope = -0.1;
+  EXPECT_THROW(solver.compute({PointSource::at_point(source)}, bad), InvalidInput);
 }
 
 TEST(PointCloudRules, PointsOnlySteepLinksReachAreStillReached) {

@@ -142,6 +142,7 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
   if (!(options.hinge_area >= 0) || std::isnan(options.hinge_area))
     throw InvalidInput("point cloud: hinge_area must be >= 0");
   if (!(options.steep_link_slope >= 0)) throw InvalidInput("point cloud: steep_link_slope must be >= 0");
+  if (!(options.gap_link_slope >= 0)) throw InvalidInput("point cloud: gap_link_slope must be >= 0");
   std::vector<detail::Seed> seeds;
   const unsigned k = std::max(1u, m.options.neighbours.k);
   std::vector<Index> idx(k);

@@ -5,8 +5,8 @@
 // rho = min(|p - q| sin(alpha), tau |p - q|^2 / |S - q|) (an angle at q and an area of the
 // hinge triangle S, p, q); else the path bends at the point x within rho of p nearest to that
 // line, which becomes q's new virtual source (sigma_p + |S - x|). Links are unfolded with
-// their arc length (curved_links), and steep links (across gaps) are left out except to reach
-// points nothing else reaches. docs/pointcloud.md.
+// their arc length (curved_links), and steep and gap links (across gaps) are left out except
+// to reach points nothing else reaches. docs/pointcloud.md.
 #include "point_propagation.hpp"
 
 #include <algorithm>
@@ -58,10 +58,11 @@ class Expander {
         max_distance_(options.max_distance),
         mean_link_(domain.mean_link), tau_(options.hinge_area), eps_(1e-12 * (domain.mean_link > 0 ? domain.mean_link : 1.0)),
         slope_(options.steep_link_slope < 1 ? options.steep_link_slope : std::numeric_limits<double>::infinity()),
+        gap_slope_(options.gap_link_slope < 1 ? options.gap_link_slope : std::numeric_limits<double>::infinity()),
         curved_(options.curved_links) {}
 
-  // After the propagation ran dry: from reached point p over its steep links into points
-  // still unreached. Across a gap p's position in q's plane means nothing, so q becomes a
+  // After the propagation ran dry: from reached point p over its steep and gap links into
+  // points still unreached. Across a gap p's position in q's plane means nothing, so q becomes a
   // source of its own (sigma = d_p + |q - p|, at q).
   template <class Push>
   void reach_over_steep(Index p, Push&& push) {
@@ -121,8 +122,10 @@ class Expander {
         cand = sig + lv;
       } else {
         const Vec3 link = pos_[q] - pos_[p];
-        const double slope_limit = slope_ * chord;   // steep links: see reach_over_steep
-        if (std::abs(dot(link, np0)) > slope_limit || std::abs(dot(link, nq)) > slope_limit) continue;
+        // Steep links (steep at one end) and gap links (steep at both ends) are skipped here;
+        // see reach_over_steep.
+        const double off_p = std::abs(dot(link, np0)), off_q = std::abs(dot(link, nq));
+        if (std::max(off_p, off_q) > slope_ * chord || std::min(off_p, off_q) > gap_slope_ * chord) continue;
         const Vec3 np = dot(np0, nq) < 0 ? -1.0 * np0 : np0;   // estimated normals are unoriented
         Vec3 ep = link - dot(link, np) * np;
         Vec3 eq = link - dot(link, nq) * nq;
@@ -184,7 +187,7 @@ class Expander {
   PointState& state_;
   PointPropagationStats& stats_;
   double sin_max_, max_distance_, mean_link_;
-  double tau_, eps_, slope_;
+  double tau_, eps_, slope_, gap_slope_;
   bool curved_;
 };
 
@@ -231,7 +234,7 @@ void propagate_gsp(const Domain& domain, const std::vector<Seed>& seeds, const P
       limit += step;
     }
     // Points only steep links lead to: reached over them, then the propagation goes on.
-    if (!(options.steep_link_slope < 1)) break;
+    if (!(options.steep_link_slope < 1) && !(options.gap_link_slope < 1)) break;
     for (Index p = 0; p < Index(state.distance.size()); ++p)
       ex.reach_over_steep(p, [&](const Entry& n) { ++stats.enqueued, a.push_back(n); });
     if (a.empty()) break;

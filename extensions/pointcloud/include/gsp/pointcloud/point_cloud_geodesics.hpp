@@ -71,6 +71,12 @@ struct PointGeodesicOptions {
   // points that no other link reaches (so every point of a reached graph component is still
   // reached). 1 or more: every link is used.
   double steep_link_slope = 0.8;
+  // Gap links: steep at both ends, |n . (q - p)| > gap_link_slope |q - p| at p and at q. A
+  // chord of a smooth, well-sampled surface leaves each tangent plane at about half the angle
+  // the surface turns over it (a few degrees); one that leaves both planes at more than 20
+  // degrees steps between two sheets closer than the sample spacing (lips, the rim of a thin
+  // plate) or cuts a sharp edge. Treated like steep links. 1 or more: off.
+  double gap_link_slope = 0.35;
   PositionSeeding seeding = PositionSeeding::neighbours;
   bool want_virtual_sources = false;
 };
@@ -103,7 +109,7 @@ struct PointPropagationStats {
   std::uint64_t update_steps = 0;   // candidate evaluations (one per link tried)
   std::uint64_t updates = 0;        // accepted (a point got a shorter distance)
   std::uint64_t bends = 0;          // accepted updates that created a new virtual source
-  std::uint64_t steep_links_used = 0;   // points reached only over steep links (see options)
+  std::uint64_t steep_links_used = 0;   // points reached only over steep or gap links (see options)
   std::uint64_t enqueued = 0;
   std::uint64_t stale_skipped = 0;
   std::uint64_t iterations = 0;     // speed-limiter rounds (heap pops for Dijkstra)
