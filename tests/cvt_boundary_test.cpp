@@ -10,22 +10,22 @@ using test::check_remesh;
 
 TEST(CvtRemesh, CamelheadDisk) {
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
-  // Minimum angle: 12.x with the initial sites of the first sampler, 11.3 since the sampler
-  // tries its candidates in batches in layout order (other initial sites; the minimum sits at
-  // the mouth slit and moves with them).
-  check_remesh(io::read_mesh(test::shared_mesh("camelhead.off")).mesh, 2000, {11.0, 0.004, 0.013});
+  // Minimum angle 11.3 for the dual itself, 13.4 after the smoothing post-pass: the minimum
+  // sits at the mouth slit, two sheets closer than an edge at this resolution (28-33 degrees
+  // at 10,000 vertices, docs/cvt.md).
+  check_remesh(io::read_mesh(test::shared_mesh("camelhead.off")).mesh, 2000, {12.0, 0.003, 0.013});
 }
 
 TEST(CvtRemesh, BunnyFiveHoles) {
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
-  check_remesh(io::read_mesh(test::shared_mesh("stanford_bunny.obj")).mesh, 2000, {13.0, 0.003, 0.011});
+  check_remesh(io::read_mesh(test::shared_mesh("stanford_bunny.obj")).mesh, 2000, {21.0, 0.001, 0.011});   // measured 23.2, 0.025%
 }
 
 TEST(CvtRemesh, FlatSquare) {
   // A flat disk whose boundary has four corners (cut off by the dual: corners are not kept,
   // which is most of the Hausdorff distance here).
   const TriangleMesh m = test::square_grid(30);
-  check_remesh(m, 200, {20.0, 0.02, 0.03});
+  check_remesh(m, 200, {30.0, 0.005, 0.03});   // measured 35.4, 0%
 }
 
 }  // namespace

@@ -8,12 +8,12 @@ using test::check_remesh;
 
 TEST(CvtRemesh, FertilityGenus4) {
   const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
-  check_remesh(m, 2000, {25.0, 0.002, 0.010});
+  check_remesh(m, 2000, {29.0, 0.001, 0.010});   // measured 31.3, 0%
 }
 
 TEST(CvtRemesh, ArmadilloGenus0) {
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
-  check_remesh(io::read_mesh(test::shared_mesh("armadillo_remeshed.obj")).mesh, 2000, {20.0, 0.002, 0.011});
+  check_remesh(io::read_mesh(test::shared_mesh("armadillo_remeshed.obj")).mesh, 2000, {28.0, 0.001, 0.011});   // 31.7, 0%
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ struct Options {
   double tolerance = 1e-4, over_relaxation = 1.6;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
-  bool no_fix = false, no_flip = false, ascii = false;
+  bool no_fix = false, no_flip = false, no_smooth = false, ascii = false;
   cli::LoadOptions load;
 };
 
@@ -55,6 +55,8 @@ void add_options(CLI::App& app, Options& o) {
                  "(.ply .obj .off .glb .gltf)");
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
   app.add_flag("--no-flip", o.no_flip, "write the restricted Delaunay dual as it is, without the angle-raising edge flips");
+  app.add_flag("--no-smooth", o.no_smooth,
+               "leave the vertices at the sites (no angle-raising moves along the input surface)");
   app.add_option("--hausdorff-samples", o.hausdorff_samples,
                  "with --stats: area-uniform points per surface for the Hausdorff distance (default 200000)");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
@@ -109,6 +111,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["seed"] = o.seed;
   ctx.settings()["fix_regions"] = co.fix_regions;
   ctx.settings()["flip_edges"] = !o.no_flip;
+  ctx.settings()["smooth"] = !o.no_smooth;
 
   // A progress line per iteration: the bar counts iterations against the cap, the label
   // carries the energy.
@@ -128,6 +131,7 @@ void run(cli::Context& ctx, const Options& o) {
   auto dual_scope = ctx.timer().scope("remesh");
   cvt::RemeshOptions ro;
   ro.flip_edges = !o.no_flip;
+  ro.smooth = !o.no_smooth;
   const cvt::RemeshResult remesh = cvt::restricted_delaunay(result, ro);
   dual_scope.stop();
   const TopologyReport topo_in = analyze_topology(in.mesh, build_connectivity(in.mesh));

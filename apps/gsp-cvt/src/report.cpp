@@ -87,6 +87,9 @@ void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const Top
   res["skipped_junctions"] = remesh.stats.skipped_junctions;
   res["unused_sites"] = remesh.stats.unused_sites;
   res["flips"] = remesh.stats.flips;
+  res["smoothing_moves"] = remesh.stats.smoothing_moves;
+  res["smoothing_boundary_moves"] = remesh.stats.smoothing_boundary_moves;
+  res["boundary_collapses"] = remesh.stats.boundary_collapses;
   ctx.stats()["topology"]["input"] = topology_json(input);
   ctx.stats()["topology"]["output"] = topology_json(output);
 }

@@ -1,11 +1,36 @@
 // The restricted Delaunay dual of face-labelled Voronoi regions (see remesh.hpp).
+#include "boundary_collapse.hpp"
 #include "flips.hpp"
 #include "junctions.hpp"
+#include "smoothing.hpp"
 
 #include <gsp/cvt/remesh.hpp>
 #include <gsp/errors.hpp>
 
 namespace gsp::cvt {
+
+namespace {
+
+// Vertices no triangle uses any more (collapsed) are dropped; the rest keep their order.
+void drop_unused_vertices(RemeshResult& r) {
+  std::vector<Index> remap(r.mesh.num_vertices(), kInvalidIndex);
+  for (const Triangle& t : r.mesh.triangles)
+    for (Index v : t) remap[v] = 0;
+  Index next = 0;
+  for (std::size_t v = 0; v < remap.size(); ++v)
+    if (remap[v] == 0) {
+      remap[v] = next;
+      r.mesh.positions[next] = r.mesh.positions[v];
+      r.vertex_site[next] = r.vertex_site[v];
+      ++next;
+    }
+  r.mesh.positions.resize(next);
+  r.vertex_site.resize(next);
+  for (Triangle& t : r.mesh.triangles)
+    for (Index& v : t) v = remap[v];
+}
+
+}  // namespace
 
 RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& options) {
   const TriangleMesh& m = cvt.working.mesh;
@@ -27,6 +52,21 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
   r.mesh.triangles = std::move(d.triangles);
   r.stats.unused_sites = cvt.sites.size() - r.vertex_site.size();
   if (options.flip_edges) r.stats.flips = detail::improve_by_flips(r.mesh, options.flip_max_normal_angle);
+  if (options.smooth && !r.mesh.triangles.empty()) {
+    detail::SmoothParams sp;
+    sp.passes = options.smooth_passes;
+    sp.below_angle = options.smooth_below_angle;
+    sp.max_deviation = options.smooth_max_deviation * cvt.diagonal;
+    sp.flip_max_normal_angle = options.flip_edges ? options.flip_max_normal_angle : -1.0;
+    const detail::BoundaryCurves curves(cvt.working.mesh);
+    r.stats.boundary_collapses =
+        detail::collapse_boundary_edges(r.mesh, curves, options.smooth_below_angle, sp.max_deviation);
+    const detail::SmoothCounts c = detail::smooth_vertices(r.mesh, cvt.working.mesh, curves, sp);
+    r.stats.smoothing_moves = c.moves;
+    r.stats.smoothing_boundary_moves = c.boundary_moves;
+    r.stats.flips += c.flips;
+    if (r.stats.boundary_collapses) drop_unused_vertices(r);
+  }
   return r;
 }
 

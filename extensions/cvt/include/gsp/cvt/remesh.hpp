@@ -22,6 +22,17 @@ struct RemeshOptions {
   // and topology are unchanged.
   bool flip_edges = true;
   double flip_max_normal_angle = 20.0;
+  // Then move vertices whose triangles have an angle below `smooth_below_angle` degrees:
+  // interior ones towards the mean of their neighbours (tangentially, then onto the input
+  // surface by closest point), boundary ones along the input's boundary curve towards the
+  // arc-length midpoint of their boundary neighbours; a move is kept only if it raises the
+  // smallest angle of the vertex's triangles and keeps them within
+  // max(smooth_max_deviation * diagonal, their deviation before) of the surface. Flips again
+  // after every pass. Vertices stay on the input surface; counts and topology are unchanged.
+  bool smooth = true;
+  int smooth_passes = 8;
+  double smooth_below_angle = 35.0;
+  double smooth_max_deviation = 4e-3;   // fraction of the bounding-box diagonal
 };
 
 struct RemeshStats {
@@ -30,7 +41,10 @@ struct RemeshStats {
   std::size_t duplicate_triangles = 0;  // the same three regions meeting again (dropped)
   std::size_t skipped_junctions = 0;    // a region met twice around one vertex, or a non-manifold vertex
   std::size_t unused_sites = 0;         // sites without a triangle (not in the output)
-  std::size_t flips = 0;                // edges flipped (RemeshOptions::flip_edges)
+  std::size_t flips = 0;                // edges flipped (RemeshOptions::flip_edges, and during smoothing)
+  std::size_t smoothing_moves = 0;      // vertex moves kept by the smoothing (of which along the boundary:)
+  std::size_t smoothing_boundary_moves = 0;
+  std::size_t boundary_collapses = 0;   // short boundary edges collapsed (one vertex fewer each)
 };
 
 struct RemeshResult {
