@@ -8,3 +8,6 @@ if(TARGET gsp-path)
   gsp_test(pathfinding_app_test SOURCES pathfinding_app_test.cpp DEPS gsp::pathfinding gsp::io TinyGLTF::TinyGLTF)
   add_dependencies(pathfinding_app_test gsp-path)   # the test runs the binary
 endif()
+if(GSP_WITH_CGAL)
+  gsp_test(pathfinding_shared_test SOURCES pathfinding_shared_test.cpp DEPS gsp::pathfinding gsp::io gsp::reference)
+endif()

@@ -70,6 +70,24 @@ TEST(PathApp, ObjLinesAndStatsMatchTheLibrary) {
   }
 }
 
+// --one-end skips the propagations from the end points: the path is the one traced in
+// --from's field, never shorter than the default's (which keeps the shorter of two).
+TEST(PathApp, OneEndTracesOneField) {
+  ScratchDir dir("path");
+  const auto out = dir / "p.obj";
+  const std::string base = kApp + " " + quote(kMesh) + " --from 0 --to 2000 --to 500 --stats - -o " + quote(out.string());
+  const RunResult both = run(base, dir);
+  const RunResult one = run(base + " --one-end", dir);
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  const JsonValue sb = parse_json(both.out), so = parse_json(one.out);
+  EXPECT_GT(sb["operations"]["reverse_faces_expanded"].num, 0);
+  EXPECT_EQ(so["operations"]["reverse_faces_expanded"].num, 0);
+  EXPECT_EQ(so["result"]["reversed"].num, 0);
+  for (std::size_t k = 0; k < 2; ++k)
+    EXPECT_LE(sb["result"]["paths"].items[k]["length"].num, so["result"]["paths"].items[k]["length"].num * (1 + 1e-12));
+}
+
 TEST(PathApp, PlyEdgesGltfLineStripAndJson) {
   ScratchDir dir("path");
   const double expected = library_length(0, 2000);
