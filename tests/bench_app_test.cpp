@@ -266,6 +266,27 @@ TEST(BenchApp, CgalRefusalSkipsExactAndHeatOnly) {
   EXPECT_NE(r.err.find("exact skipped"), std::string::npos) << r.err;
 }
 
+TEST(BenchApp, SubdivideBuildsLargerCurvedMeshes) {
+  // Loop subdivision of a closed mesh: a vertex per edge added (V + E = V + 3F/2), 4x the
+  // faces.
+  ScratchDir dir("bench");
+  gsp::test::write_file(dir / "tet.off", kTetrahedron);
+  const auto r = run_bench(quote((dir / "tet.off").string()) + " --subdivide 2 --sources 1 --repetitions 1 " +
+                               "--methods gsp,dijkstra --csv " + quote((dir / "b.csv").string()),
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // 4 -> 4 + 6 = 10 vertices, 16 faces -> 10 + 24 = 34 vertices, 64 faces.
+  EXPECT_NE(r.out.find("tet.off@loop2: 34 vertices, 64 faces"), std::string::npos) << r.out;
+  const auto rows = parse_csv(gsp::test::slurp(dir / "b.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[1][0], "tet.off@loop2");
+  // A non-manifold mesh cannot be subdivided: a clear error, exit 1.
+  gsp::test::write_file(dir / "nm.off", kNonManifold);
+  const auto bad = run_bench(quote((dir / "nm.off").string()) + " --subdivide 1", dir);
+  EXPECT_EQ(bad.exit_code, 1) << bad.err;
+  EXPECT_NE(bad.err.find("not manifold"), std::string::npos) << bad.err;
+}
+
 TEST(BenchApp, BadInputExitsOne) {
   ScratchDir dir("bench");
   gsp::test::write_file(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");
@@ -286,7 +307,8 @@ TEST(BenchApp, UsageErrorsExitTwo) {
   const std::string mesh = quote(sample_fertility());
   for (const std::string& args : {std::string(""), mesh + " --methods gsp,fast", mesh + " --methods ,",
                                   mesh + " --shard 2/2", mesh + " --shard 1", mesh + " --shard a/b",
-                                  mesh + " --sources 0", mesh + " --json - --csv -", mesh + " --frobnicate"}) {
+                                  mesh + " --sources 0", mesh + " --json - --csv -", mesh + " --frobnicate",
+                                  mesh + " --subdivide 7"}) {
     const auto r = run_bench(args, dir);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << args;

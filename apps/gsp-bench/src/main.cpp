@@ -75,7 +75,7 @@ void run(cli::Context& ctx, const Options& o) {
   std::vector<BenchMesh> meshes;
   for (const std::string& path : o.meshes) {
     ctx.set_input(path);
-    meshes.push_back(ctx.timer().time("read", [&] { return load_bench_mesh(path, o.load, o.sources, o.seed); }));
+    meshes.push_back(ctx.timer().time("read", [&] { return load_bench_mesh(path, o.load, o.sources, o.seed, o.subdivide); }));
   }
 
   Report report;

@@ -28,6 +28,7 @@ struct Options {
   bool no_table = false;
   std::string domain = "mesh";     // mesh | points: what --methods defaults to
   unsigned neighbours = 10;        // k of the point-cloud methods' k-NN graph
+  int subdivide = 0;               // rounds of Loop subdivision applied to every mesh
   cli::LoadOptions load;
 };
 

@@ -1,6 +1,7 @@
 #include "workload.hpp"
 
 #include "exact_cache.hpp"
+#include "subdivide.hpp"
 
 #include <gsp/cli/app.hpp>
 
@@ -8,6 +9,7 @@
 #include <charconv>
 #include <filesystem>
 #include <random>
+#include <string>
 
 namespace gsp::bench {
 
@@ -28,12 +30,17 @@ std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64
   return picks;
 }
 
-BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed) {
+BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed,
+                          int subdivide) {
   cli::LoadedMesh in = cli::load_mesh(path, load);
   BenchMesh m;
   m.path = path;
   m.name = std::filesystem::path(path).filename().string();
   m.mesh = std::move(in.mesh);
+  if (subdivide > 0) {
+    m.mesh = loop_subdivide(m.mesh, subdivide);
+    m.name += "@loop" + std::to_string(subdivide);
+  }
   m.hash = train::mesh_hash(m.mesh);
   m.sources = pick_sources(m.mesh, sources, seed, m.hash);
   return m;

@@ -26,7 +26,9 @@ struct BenchMesh {
 std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash);
 
 // Loads (gsp::cli::load_mesh; throws gsp::IoError for a bad file) and picks the sources.
-BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed);
+// `subdivide` > 0: Loop-subdivided that many times (subdivide.hpp), named "<file>@loop<K>".
+BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed,
+                          int subdivide = 0);
 
 // --shard i/n: work items k with k % n == i.
 struct Shard {
