@@ -66,16 +66,24 @@ struct CanonicalFrame {
 
 template <class Real>
 inline CanonicalFrame<Real> canonical_frame(const Real len[3], Index j, const EdgeView<Real>& v) {
-  // Corners 0, 1, 2 in the edge frame of halfedge j.
+  // Corner 0 and the direction to corner 1, in the edge frame of halfedge j (A = corner j at
+  // the origin, B = corner j+1 at (e1, 0), P = corner j+2 at (px, py)). Written per case, not
+  // through arrays indexed by j: this runs twice per update step.
+  const Real l = len[0];
+  if (l > 0) {
+    if (j == 0) return {Real(0), Real(0), Real(1), Real(0)};   // the canonical frame (e1 = l)
+    if (j == 1) return {v.px, v.py, -v.px / l, -v.py / l};
+    return {v.e1, Real(0), (v.px - v.e1) / l, v.py / l};
+  }
+  // Corners 0 and 1 coincide: towards corner 2 instead.
   Real x[3], y[3];
   const Index a = j, b = j == 2 ? 0 : j + 1, p = j == 0 ? 2 : j - 1;
   x[a] = 0, y[a] = 0;
   x[b] = v.e1, y[b] = 0;
   x[p] = v.px, y[p] = v.py;
-  Real dx = x[1] - x[0], dy = y[1] - y[0], l = len[0];
-  if (!(l > 0)) dx = x[2] - x[0], dy = y[2] - y[0], l = len[2];
-  if (!(l > 0)) return {x[0], y[0], Real(1), Real(0)};
-  return {x[0], y[0], dx / l, dy / l};
+  const Real dx = x[2] - x[0], dy = y[2] - y[0], l2 = len[2];
+  if (!(l2 > 0)) return {x[0], y[0], Real(1), Real(0)};
+  return {x[0], y[0], dx / l2, dy / l2};
 }
 
 // The canonical position of corner 2 (corner 0 is the origin, corner 1 is (len[0], 0)).
