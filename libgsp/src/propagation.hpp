@@ -76,12 +76,15 @@ class UpdateStep {
       return;
     }
     // The source in h's edge frame: U lies on the +y side, so a source "behind" h has y >= 0.
-    const EdgeView<Real> vu = edge_view(u.len, corner_of(h));
-    Real hx, hy;
-    canonical_frame(u.len, corner_of(h), vu).to_edge(u.sx, u.sy, hx, hy);
+    // (Halfedge 0's edge frame is the canonical frame: nothing to compute.)
+    Real hx = u.sx, hy = u.sy, e1h = u.len[0];
+    if (corner_of(h) != 0 || !(e1h > 0)) {
+      const EdgeView<Real> vu = edge_view(u.len, corner_of(h));
+      canonical_frame(u.len, corner_of(h), vu).to_edge(u.sx, u.sy, hx, hy);
+      e1h = vu.e1;
+    }
     const Real sigma = u.sigma;
     const Index source = u.source();
-    const Real e1h = vu.e1;
 
     std::uint64_t steps = 0;
     Index link = ring_[h];
@@ -177,7 +180,10 @@ class UpdateStep {
     if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) return;
     ++stats_.face_updates;
     if (reached_ && t.dT == std::numeric_limits<Real>::infinity()) reached_->push_back(face_of(g));
-    canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
+    if (cj == 0 && e1 > 0)
+      t.sx = ex, t.sy = ey;   // halfedge 0's edge frame is the canonical frame
+    else
+      canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
     t.sigma = new_sigma;
     t.dT = new_dT;
     t.tag = (t.tag & ~kSourceMask) | source;
