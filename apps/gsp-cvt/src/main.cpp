@@ -26,7 +26,7 @@ struct Options {
   std::string input, output, regions, edge_length, init = "poisson";
   std::size_t vertices = 0;
   int iterations = 50;
-  double tolerance = 1e-4, over_relaxation = 1.6;
+  double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   bool no_fix = false, no_flip = false, no_smooth = false, ascii = false;
@@ -57,6 +57,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_flag("--no-flip", o.no_flip, "write the restricted Delaunay dual as it is, without the angle-raising edge flips");
   app.add_flag("--no-smooth", o.no_smooth,
                "leave the vertices at the sites (no angle-raising moves along the input surface)");
+  app.add_option("--smooth-below", o.smooth_below,
+                 "post-pass: try to move vertices with an angle below this many degrees (default 40)")
+      ->check(CLI::Range(1.0, 60.0));
   app.add_option("--hausdorff-samples", o.hausdorff_samples,
                  "with --stats: area-uniform points per surface for the Hausdorff distance (default 200000)");
   app.add_flag("--ascii", o.ascii, "ASCII PLY instead of binary");
@@ -112,6 +115,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["fix_regions"] = co.fix_regions;
   ctx.settings()["flip_edges"] = !o.no_flip;
   ctx.settings()["smooth"] = !o.no_smooth;
+  ctx.settings()["smooth_below"] = o.smooth_below;
 
   // A progress line per iteration: the bar counts iterations against the cap, the label
   // carries the energy.
@@ -132,6 +136,7 @@ void run(cli::Context& ctx, const Options& o) {
   cvt::RemeshOptions ro;
   ro.flip_edges = !o.no_flip;
   ro.smooth = !o.no_smooth;
+  ro.smooth_below_angle = o.smooth_below;
   const cvt::RemeshResult remesh = cvt::restricted_delaunay(result, ro);
   dual_scope.stop();
   const TopologyReport topo_in = analyze_topology(in.mesh, build_connectivity(in.mesh));

@@ -90,6 +90,8 @@ void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const Top
   res["smoothing_moves"] = remesh.stats.smoothing_moves;
   res["smoothing_boundary_moves"] = remesh.stats.smoothing_boundary_moves;
   res["boundary_collapses"] = remesh.stats.boundary_collapses;
+  res["boundary_splits"] = remesh.stats.boundary_splits;
+  res["boundary_snaps"] = remesh.stats.boundary_snaps;
   ctx.stats()["topology"]["input"] = topology_json(input);
   ctx.stats()["topology"]["output"] = topology_json(output);
 }

@@ -1,11 +1,14 @@
 // The restricted Delaunay dual of face-labelled Voronoi regions (see remesh.hpp).
 #include "boundary_collapse.hpp"
+#include "boundary_fit.hpp"
 #include "flips.hpp"
 #include "junctions.hpp"
 #include "smoothing.hpp"
 
 #include <gsp/cvt/remesh.hpp>
 #include <gsp/errors.hpp>
+
+#include <algorithm>
 
 namespace gsp::cvt {
 
@@ -59,8 +62,12 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     sp.max_deviation = options.smooth_max_deviation * cvt.diagonal;
     sp.flip_max_normal_angle = options.flip_edges ? options.flip_max_normal_angle : -1.0;
     const detail::BoundaryCurves curves(cvt.working.mesh);
+    r.stats.boundary_snaps = detail::snap_boundary_vertices(r.mesh, curves, 25.0);
     r.stats.boundary_collapses =
-        detail::collapse_boundary_edges(r.mesh, curves, options.smooth_below_angle, sp.max_deviation);
+        detail::collapse_boundary_edges(r.mesh, curves, std::min(options.smooth_below_angle, 30.0), sp.max_deviation);
+    r.stats.boundary_splits =
+        detail::split_boundary_edges(r.mesh, curves, options.boundary_chord * cvt.diagonal, 30.0);
+    r.vertex_site.resize(r.mesh.num_vertices(), kInvalidIndex);
     const detail::SmoothCounts c = detail::smooth_vertices(r.mesh, cvt.working.mesh, curves, sp);
     r.stats.smoothing_moves = c.moves;
     r.stats.smoothing_boundary_moves = c.boundary_moves;

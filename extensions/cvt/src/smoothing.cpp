@@ -147,10 +147,14 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
     return worst;
   };
 
+  // A vertex is tried again only when its triangles changed since its last try (a neighbour
+  // moved, a flip): the search is deterministic, it would find nothing new.
+  std::vector<bool> dirty(V, true);
   for (int pass = 0; pass < p.passes; ++pass) {
     std::size_t moved = 0;
     for (Index v = 0; v < V; ++v) {
-      if (corner_begin[v] == corner_begin[v + 1]) continue;
+      if (corner_begin[v] == corner_begin[v + 1] || !dirty[v]) continue;
+      dirty[v] = false;
       const Vec3 x0 = m.positions[v];
       const double q0 = quality(v, x0, false);
       if (q0 >= below) continue;
@@ -176,7 +180,11 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
       // The surface must stay close: triangle deviation for interior moves, the boundary
       // chords' deviation from the boundary curve for boundary moves. Checked for every
       // improvement the search below finds, so it finds the best point that keeps the surface.
-      const double dev0 = deviation(v, x0);
+      // The reference figures of the checks below, computed when a first candidate needs them.
+      double dev0 = 0;
+      std::vector<Vec3> under;
+      std::vector<double> under_before;
+      bool prepared = false;
       // Distance from point z to v's triangles with v at y.
       auto ring_distance = [&](Vec3 z, Vec3 y) {
         double d = 1e300;
@@ -189,41 +197,44 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
         }
         return d;
       };
-      std::vector<Vec3> under{x0};
-      for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-        const Triangle& t = m.triangles[face_of(corners[c])];
-        const Index k = corner_of(corners[c]);
-        const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
-        for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
-          const SurfacePoint sp = index.closest(z);
-          if (sp.face != kInvalidIndex) under.push_back(sp.position);
-        }
-      }
-      // And the surface's own vertices near v whose closest point on v's triangles depends on
-      // v (not on the far edges, which belong to the neighbours' triangles too): the input's
-      // tips and creases are among them.
-      double reach = 0;
-      for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-        const Triangle& t = m.triangles[face_of(corners[c])];
-        reach = std::max(reach, distance(x0, m.positions[t[(corner_of(corners[c]) + 1) % 3]]));
-      }
-      grid.near(x0, reach, [&](Index w) {
-        if (dot(surface_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
-        const Vec3 z = surface.positions[w];
+      auto prepare = [&] {
+        dev0 = deviation(v, x0);
+        under.push_back(x0);
         for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
           const Triangle& t = m.triangles[face_of(corners[c])];
           const Index k = corner_of(corners[c]);
-          const std::array<double, 3> wt =
-              closest_point_on_triangle(z, x0, m.positions[t[(k + 1) % 3]], m.positions[t[(k + 2) % 3]]);
-          if (wt[0] > 1e-9) {
-            under.push_back(z);
-            return;
+          const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
+          for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
+            const SurfacePoint sp = index.closest(z);
+            if (sp.face != kInvalidIndex) under.push_back(sp.position);
           }
         }
-      });
-      std::vector<double> under_before;
-      for (Vec3 z : under) under_before.push_back(ring_distance(z, x0));
+        // And the surface's own vertices near v whose closest point on v's triangles depends on
+        // v (not on the far edges, which belong to the neighbours' triangles too): the input's
+        // tips and creases are among them.
+        double reach = 0;
+        for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+          const Triangle& t = m.triangles[face_of(corners[c])];
+          reach = std::max(reach, distance(x0, m.positions[t[(corner_of(corners[c]) + 1) % 3]]));
+        }
+        grid.near(x0, reach, [&](Index w) {
+          if (dot(surface_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
+          const Vec3 z = surface.positions[w];
+          for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+            const Triangle& t = m.triangles[face_of(corners[c])];
+            const Index k = corner_of(corners[c]);
+            const std::array<double, 3> wt =
+                closest_point_on_triangle(z, x0, m.positions[t[(k + 1) % 3]], m.positions[t[(k + 2) % 3]]);
+            if (wt[0] > 1e-9) {
+              under.push_back(z);
+              return;
+            }
+          }
+        });
+        for (Vec3 z : under) under_before.push_back(ring_distance(z, x0));
+      };
       auto close_enough = [&](Vec3 y, double sy) {
+        if (!prepared) prepare(), prepared = true;
         if (on_boundary) {
           const Index a = prev_b[v], b = next_b[v];
           const double sa = arc[a], sv = arc[v], sb = arc[b];
@@ -312,9 +323,15 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
       m.positions[v] = x;
       if (on_boundary) arc[v] = sx, ++counts.boundary_moves;
       ++moved;
+      for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c)
+        for (Index w : m.triangles[face_of(corners[c])]) dirty[w] = true;
     }
     counts.moves += moved;
+    const std::vector<Triangle> before_flips = m.triangles;
     const std::size_t flips = p.flip_max_normal_angle < 0 ? 0 : improve_by_flips(m, p.flip_max_normal_angle);
+    for (std::size_t f = 0; f < m.num_faces(); ++f)
+      if (m.triangles[f] != before_flips[f])
+        for (Index w : m.triangles[f]) dirty[w] = true;
     counts.flips += flips;
     if (moved == 0 && flips == 0) break;
     if (flips) rebuild();

@@ -22,17 +22,26 @@ struct RemeshOptions {
   // and topology are unchanged.
   bool flip_edges = true;
   double flip_max_normal_angle = 20.0;
-  // Then move vertices whose triangles have an angle below `smooth_below_angle` degrees:
-  // interior ones towards the mean of their neighbours (tangentially, then onto the input
-  // surface by closest point), boundary ones along the input's boundary curve towards the
-  // arc-length midpoint of their boundary neighbours; a move is kept only if it raises the
-  // smallest angle of the vertex's triangles and keeps them within
-  // max(smooth_max_deviation * diagonal, their deviation before) of the surface. Flips again
-  // after every pass. Vertices stay on the input surface; counts and topology are unchanged.
+  // The post-pass (docs/cvt.md), in this order: boundary vertices off the input's boundary
+  // curve are snapped onto it; boundary edges opposite a triangle's smallest angle (below
+  // `smooth_below_angle`) are collapsed where that raises the angles around them; boundary
+  // edges whose chord cuts the input's boundary curve by more than `boundary_chord` are split;
+  // then vertices whose triangles have an angle below `smooth_below_angle` degrees move:
+  // interior ones on the input surface (Embree closest point), boundary ones along the input's
+  // boundary curve, by a search on the smallest angle of their triangles. A move is kept only
+  // if it raises that angle, folds nothing, and keeps the triangles within
+  // max(smooth_max_deviation * diagonal, before) of the input and the input within the same
+  // bound of the triangles. Flips again after every pass. Every vertex stays on the input
+  // surface and the topology is unchanged; the vertex count changes by the collapses and
+  // splits (reported).
   bool smooth = true;
   int smooth_passes = 8;
-  double smooth_below_angle = 35.0;
+  double smooth_below_angle = 40.0;
   double smooth_max_deviation = 4e-3;   // fraction of the bounding-box diagonal
+  // Boundary edges whose chord is farther than this fraction of the diagonal from the input's
+  // boundary curve are split at the curve's farthest point (a new vertex without a site) when
+  // that makes no angle below min(the triangle's, 30 degrees). 0: no splits.
+  double boundary_chord = 2.5e-3;
 };
 
 struct RemeshStats {
@@ -45,11 +54,13 @@ struct RemeshStats {
   std::size_t smoothing_moves = 0;      // vertex moves kept by the smoothing (of which along the boundary:)
   std::size_t smoothing_boundary_moves = 0;
   std::size_t boundary_collapses = 0;   // short boundary edges collapsed (one vertex fewer each)
+  std::size_t boundary_splits = 0;      // boundary edges split (one vertex more each)
+  std::size_t boundary_snaps = 0;       // boundary vertices moved onto the input's boundary curve
 };
 
 struct RemeshResult {
   TriangleMesh mesh;
-  std::vector<Index> vertex_site;   // output vertex -> index into cvt.sites
+  std::vector<Index> vertex_site;   // output vertex -> index into cvt.sites (kInvalidIndex: a boundary split)
   RemeshStats stats;
 };
 
