@@ -83,5 +83,31 @@ TEST(PathShared, ArmadilloBothEndsAgainstExact) {
               100 * raw_vs_field / std::max(raw_n, 1), raw_n);
 }
 
+// The Newell teapot as stored: patch seams left open (403 duplicated positions), 10 boundary
+// loops. On these pairs the walk runs in circles in both fields and no sleeve can be formed
+// round the seam vertices; the descent's edge route is returned as it is (10-25% longer than
+// the field measured, a true surface path) instead of an error.
+TEST(PathShared, TeapotSeamsGiveEdgeRoutesNotErrors) {
+  if (!have_shared_data()) GTEST_SKIP() << "shared data folder missing";
+  const TriangleMesh m = io::read_mesh(shared_mesh("newell_teapot.obj")).mesh;
+  const GeodesicSolver solver(m);
+  const pathfinding::PathTracer tracer(m);
+  const std::pair<Index, Index> pairs[] = {{3, 1000}, {1448, 87}, {175, 793}, {2889, 2866}, {2780, 259}};
+  for (const auto& [s, t] : pairs) {
+    SCOPED_TRACE("source " + std::to_string(s) + " target " + std::to_string(t));
+    for (const bool both : {true, false}) {
+      pathfinding::PathQueryOptions po;
+      po.both_ends = both;
+      const auto r = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)}, po);
+      const pathfinding::GeodesicPath& p = r.paths.at(0);
+      expect_valid_path(m, p);
+      EXPECT_LT(distance(p.points.front().position, m.positions[s]), 1e-9);
+      EXPECT_EQ(distance(p.points.back().position, m.positions[t]), 0.0);
+      EXPECT_GT(p.length, 0.99 * p.field_distance);
+      EXPECT_LT(p.length, 1.5 * p.field_distance);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gsp::test

@@ -67,6 +67,27 @@ std::vector<Index> chain_faces(const TriangleMesh& mesh, const Connectivity& con
   return faces;
 }
 
+// The points of the descent itself: start, the chain's vertices, end; each in the face
+// holding the segment that ends there (faces as chain_faces gives them).
+std::vector<PathPoint> edge_route(const TriangleMesh& mesh, const std::vector<Index>& chain, const std::vector<Index>& faces,
+                                  const PathPoint& start, const PathPoint& end) {
+  std::vector<PathPoint> points{start};
+  auto push = [&](const PathPoint& q) {
+    if (distance(points.back().position, q.position) > 0) points.push_back(q);
+  };
+  for (std::size_t i = 0; i < chain.size(); ++i) {
+    PathPoint q;
+    q.face = faces[i];   // start's face for the bottom vertex, then the edge's face
+    q.position = mesh.positions[chain[i]];
+    q.barycentric = {0, 0, 0};
+    for (int c = 0; c < 3; ++c)
+      if (mesh.triangles[q.face][c] == chain[i]) q.barycentric[c] = 1;
+    push(q);
+  }
+  push(end);
+  return points;
+}
+
 }  // namespace
 
 std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
@@ -124,7 +145,10 @@ bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const Geod
   // source with an initial offset lands here too: the walk handles those).
   if (!found_face_source && !(d[u] <= 0)) return false;
   const std::vector<Index> faces = chain_faces(mesh, conn, chain, start.face, end.face);
-  if (faces.empty() || !shorten_in_sleeve(mesh, conn, start, end, faces, out.points)) return false;
+  if (faces.empty()) return false;
+  // No sleeve through these faces (a vertex whose fan the walk round it cannot follow: a
+  // non-manifold vertex, seams left open): the edge route as it is, a true surface path.
+  if (!shorten_in_sleeve(mesh, conn, start, end, faces, out.points)) out.points = edge_route(mesh, chain, faces, start, end);
   out.length = polyline_length(out.points);
   out.source = field.face_sources.size() > start.face ? field.face_sources[start.face].source : kInvalidIndex;
   if (out.source == kInvalidIndex && u < field.vertex_source.size()) out.source = field.vertex_source[u];

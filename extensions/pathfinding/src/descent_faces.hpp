@@ -22,7 +22,8 @@ std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& c
 
 // The whole path by descent alone: down to the vertex where the field bottoms out, where the
 // source is found (a face whose virtual source lies in it with sigma about 0, else the vertex
-// itself), then pulled taut. False when the descent or the shortening fails.
+// itself), then pulled taut; where no sleeve can be formed, the edge route as it is. False
+// when the descent fails.
 bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
                   const PathPoint& end, GeodesicPath& out);
 
