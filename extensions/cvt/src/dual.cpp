@@ -61,14 +61,18 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     sp.below_angle = options.smooth_below_angle;
     sp.max_deviation = options.smooth_max_deviation * cvt.diagonal;
     sp.flip_max_normal_angle = options.flip_edges ? options.flip_max_normal_angle : -1.0;
-    const detail::BoundaryCurves curves(cvt.working.mesh);
+    // The working mesh is the input's surface; projecting onto the input itself (rebuilt from
+    // the working faces' parents, 16-64 times fewer faces) saved about 1 s at 10,000 vertices
+    // but ended in lower minimum angles (fertility 32.8 against 34.6 degrees).
+    const TriangleMesh& surface = cvt.working.mesh;
+    const detail::BoundaryCurves curves(surface);
     r.stats.boundary_snaps = detail::snap_boundary_vertices(r.mesh, curves, 25.0);
     r.stats.boundary_collapses =
         detail::collapse_boundary_edges(r.mesh, curves, std::min(options.smooth_below_angle, 30.0), sp.max_deviation);
     r.stats.boundary_splits =
         detail::split_boundary_edges(r.mesh, curves, options.boundary_chord * cvt.diagonal, 30.0);
     r.vertex_site.resize(r.mesh.num_vertices(), kInvalidIndex);
-    const detail::SmoothCounts c = detail::smooth_vertices(r.mesh, cvt.working.mesh, curves, sp);
+    const detail::SmoothCounts c = detail::smooth_vertices(r.mesh, surface, cvt.working.mesh, curves, sp);
     r.stats.smoothing_moves = c.moves;
     r.stats.smoothing_boundary_moves = c.boundary_moves;
     r.stats.flips += c.flips;

@@ -57,18 +57,19 @@ class PointGrid {
 
 }  // namespace
 
-SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const BoundaryCurves& curves,
+SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const TriangleMesh& samples,
+                             const BoundaryCurves& curves,
                              const SmoothParams& p) {
   SmoothCounts counts;
   const ClosestPointIndex index(surface);
   double mean_edge = 0;
   for (const Triangle& t : m.triangles) mean_edge += distance(m.positions[t[0]], m.positions[t[1]]);
   mean_edge /= double(std::max<std::size_t>(1, m.num_faces()));
-  const PointGrid grid(surface.positions, mean_edge);
-  std::vector<Vec3> surface_normal(surface.num_vertices());   // area-weighted, not normalised
-  for (const Triangle& t : surface.triangles) {
-    const Vec3 n = cross(surface.positions[t[1]] - surface.positions[t[0]], surface.positions[t[2]] - surface.positions[t[0]]);
-    for (Index w : t) surface_normal[w] = surface_normal[w] + n;
+  const PointGrid grid(samples.positions, mean_edge);
+  std::vector<Vec3> sample_normal(samples.num_vertices());   // area-weighted, not normalised
+  for (const Triangle& t : samples.triangles) {
+    const Vec3 n = cross(samples.positions[t[1]] - samples.positions[t[0]], samples.positions[t[2]] - samples.positions[t[0]]);
+    for (Index w : t) sample_normal[w] = sample_normal[w] + n;
   }
   const double below = p.below_angle * kPi / 180.0;
   const double fold_cos = std::cos(40.0 * kPi / 180.0);
@@ -209,7 +210,7 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
             if (sp.face != kInvalidIndex) under.push_back(sp.position);
           }
         }
-        // And the surface's own vertices near v whose closest point on v's triangles depends on
+        // And the sample mesh's vertices near v whose closest point on v's triangles depends on
         // v (not on the far edges, which belong to the neighbours' triangles too): the input's
         // tips and creases are among them.
         double reach = 0;
@@ -218,8 +219,8 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
           reach = std::max(reach, distance(x0, m.positions[t[(corner_of(corners[c]) + 1) % 3]]));
         }
         grid.near(x0, reach, [&](Index w) {
-          if (dot(surface_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
-          const Vec3 z = surface.positions[w];
+          if (dot(sample_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
+          const Vec3 z = samples.positions[w];
           for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
             const Triangle& t = m.triangles[face_of(corners[c])];
             const Index k = corner_of(corners[c]);

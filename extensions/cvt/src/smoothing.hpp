@@ -27,8 +27,11 @@ struct SmoothCounts {
 // quarter step) is kept only if it raises the smallest angle of the vertex's triangles, folds
 // none of them, and keeps their centroids within max(max_deviation, before) of the surface;
 // so the mesh's minimum angle never falls. Edge flips (improve_by_flips) follow every pass.
-// `curves`: the boundary loops of `surface`. Vertices without triangles are left alone.
-SmoothCounts smooth_vertices(TriangleMesh& mesh, const TriangleMesh& surface, const BoundaryCurves& curves,
-                             const SmoothParams& params);
+// `curves`: the boundary loops of `surface`. `samples`: a mesh of the same surface whose
+// vertices are dense enough to stand for it in the check that the surface stays close to the
+// moved triangles (the working mesh; `surface` itself can be the coarser input). Vertices
+// without triangles are left alone.
+SmoothCounts smooth_vertices(TriangleMesh& mesh, const TriangleMesh& surface, const TriangleMesh& samples,
+                             const BoundaryCurves& curves, const SmoothParams& params);
 
 }  // namespace gsp::cvt::detail
