@@ -280,6 +280,14 @@ TEST(BenchApp, SubdivideBuildsLargerCurvedMeshes) {
   const auto rows = parse_csv(gsp::test::slurp(dir / "b.csv"));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[1][0], "tet.off@loop2");
+  // A vertex no face uses (scans keep some) is dropped, not a crash: 4 + 6 = 10 vertices.
+  gsp::test::write_file(dir / "tet_extra.off",
+                        "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 5 5\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const auto extra = run_bench(quote((dir / "tet_extra.off").string()) + " --subdivide 1 --sources 1 " +
+                                   "--repetitions 1 --methods gsp",
+                               dir);
+  ASSERT_EQ(extra.exit_code, 0) << extra.err;
+  EXPECT_NE(extra.out.find("tet_extra.off@loop1: 10 vertices, 16 faces"), std::string::npos) << extra.out;
   // A non-manifold mesh cannot be subdivided: a clear error, exit 1.
   gsp::test::write_file(dir / "nm.off", kNonManifold);
   const auto bad = run_bench(quote((dir / "nm.off").string()) + " --subdivide 1", dir);
