@@ -148,6 +148,52 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
     return worst;
   };
 
+  // Distance from point z to v's triangles with v at y.
+  auto ring_distance = [&](Index v, Vec3 z, Vec3 y) {
+    double d = 1e300;
+    for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+      const Triangle& t = m.triangles[face_of(corners[c])];
+      const Index k = corner_of(corners[c]);
+      const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
+      const std::array<double, 3> w = closest_point_on_triangle(z, y, b, e);
+      d = std::min(d, distance(z, w[0] * y + w[1] * b + w[2] * e));
+    }
+    return d;
+  };
+  // Points of the surface under v's triangles (v at x0; `normal`: theirs): x0, the surface
+  // points nearest their edge midpoints at v and centroids, and the sample mesh's vertices
+  // near v whose closest point on the triangles depends on v (not on the far edges, which
+  // belong to the neighbours' triangles too): the input's tips and creases are among them.
+  auto under_points = [&](Index v, Vec3 x0, Vec3 normal) {
+    std::vector<Vec3> under{x0};
+    double reach = 0;
+    for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+      const Triangle& t = m.triangles[face_of(corners[c])];
+      const Index k = corner_of(corners[c]);
+      const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
+      reach = std::max(reach, distance(x0, b));
+      for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
+        const SurfacePoint sp = index.closest(z);
+        if (sp.face != kInvalidIndex) under.push_back(sp.position);
+      }
+    }
+    grid.near(x0, reach, [&](Index w) {
+      if (dot(sample_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
+      const Vec3 z = samples.positions[w];
+      for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+        const Triangle& t = m.triangles[face_of(corners[c])];
+        const Index k = corner_of(corners[c]);
+        const std::array<double, 3> wt =
+            closest_point_on_triangle(z, x0, m.positions[t[(k + 1) % 3]], m.positions[t[(k + 2) % 3]]);
+        if (wt[0] > 1e-9) {
+          under.push_back(z);
+          return;
+        }
+      }
+    });
+    return under;
+  };
+
   // A vertex is tried again only when its triangles changed since its last try (a neighbour
   // moved, a flip): the search is deterministic, it would find nothing new.
   std::vector<bool> dirty(V, true);
@@ -186,53 +232,10 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
       std::vector<Vec3> under;
       std::vector<double> under_before;
       bool prepared = false;
-      // Distance from point z to v's triangles with v at y.
-      auto ring_distance = [&](Vec3 z, Vec3 y) {
-        double d = 1e300;
-        for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-          const Triangle& t = m.triangles[face_of(corners[c])];
-          const Index k = corner_of(corners[c]);
-          const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
-          const std::array<double, 3> w = closest_point_on_triangle(z, y, b, e);
-          d = std::min(d, distance(z, w[0] * y + w[1] * b + w[2] * e));
-        }
-        return d;
-      };
       auto prepare = [&] {
         dev0 = deviation(v, x0);
-        under.push_back(x0);
-        for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-          const Triangle& t = m.triangles[face_of(corners[c])];
-          const Index k = corner_of(corners[c]);
-          const Vec3 b = m.positions[t[(k + 1) % 3]], e = m.positions[t[(k + 2) % 3]];
-          for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
-            const SurfacePoint sp = index.closest(z);
-            if (sp.face != kInvalidIndex) under.push_back(sp.position);
-          }
-        }
-        // And the sample mesh's vertices near v whose closest point on v's triangles depends on
-        // v (not on the far edges, which belong to the neighbours' triangles too): the input's
-        // tips and creases are among them.
-        double reach = 0;
-        for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-          const Triangle& t = m.triangles[face_of(corners[c])];
-          reach = std::max(reach, distance(x0, m.positions[t[(corner_of(corners[c]) + 1) % 3]]));
-        }
-        grid.near(x0, reach, [&](Index w) {
-          if (dot(sample_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
-          const Vec3 z = samples.positions[w];
-          for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
-            const Triangle& t = m.triangles[face_of(corners[c])];
-            const Index k = corner_of(corners[c]);
-            const std::array<double, 3> wt =
-                closest_point_on_triangle(z, x0, m.positions[t[(k + 1) % 3]], m.positions[t[(k + 2) % 3]]);
-            if (wt[0] > 1e-9) {
-              under.push_back(z);
-              return;
-            }
-          }
-        });
-        for (Vec3 z : under) under_before.push_back(ring_distance(z, x0));
+        under = under_points(v, x0, normal);
+        for (Vec3 z : under) under_before.push_back(ring_distance(v, z, x0));
       };
       auto close_enough = [&](Vec3 y, double sy) {
         if (!prepared) prepare(), prepared = true;
@@ -251,7 +254,7 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
         // end up farther from the moved triangles than max(before, max_deviation), or a tip or
         // a crease the vertex sat on would be cut off.
         for (std::size_t i = 0; i < under.size(); ++i)
-          if (ring_distance(under[i], y) > std::max(under_before[i], p.max_deviation)) return false;
+          if (ring_distance(v, under[i], y) > std::max(under_before[i], p.max_deviation)) return false;
         return true;
       };
       // The best position so far (its arc length on the boundary) and its quality.
@@ -337,6 +340,88 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
     if (moved == 0 && flips == 0) break;
     if (flips) rebuild();
   }
+  // Pull: a sample vertex of the surface farther than pull_distance from the mesh (the dual's
+  // chords cut the surface there) pulls a corner of the triangle nearest to it part of the way
+  // towards it (on the surface; the position that brings it closest), if the corner is
+  // interior, nothing folds, no angle falls below min(before, max(30 degrees, the mesh's
+  // minimum angle)) and
+  // the surface checks above hold with pull_distance as the bound (nothing else ends up
+  // farther than that unless it already was). Two rounds; moved vertices and their neighbours
+  // are locked within a round.
+  auto pull_round = [&]() -> std::size_t {
+    const ClosestPointIndex out(m);
+    double mesh_min = 10;
+    for (const Triangle& t : m.triangles)
+      mesh_min = std::min(mesh_min, min_angle(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]));
+    struct Far {
+      double d;
+      Index w, face;
+    };
+    std::vector<Far> far;
+    for (Index w = 0; w < samples.num_vertices(); ++w) {
+      const SurfacePoint sp = out.closest(samples.positions[w]);
+      if (sp.face != kInvalidIndex && sp.distance > p.pull_distance) far.push_back({sp.distance, w, sp.face});
+    }
+    std::sort(far.begin(), far.end(), [](const Far& a, const Far& b) { return a.d > b.d; });
+    // Only the worst spots (the Hausdorff distance is a maximum; moving a neighbour's corner
+    // can help it too): within half the farthest distance, at most 2,000 points. A coarse
+    // remesh is far from the surface everywhere.
+    std::size_t keep = 0;
+    while (keep < far.size() && keep < 2000 && far[keep].d >= 0.5 * far.front().d) ++keep;
+    far.resize(keep);
+    std::vector<bool> locked(V, false);
+    std::size_t pulled = 0;
+    for (const Far& f : far) {
+      const Vec3 z = samples.positions[f.w];
+      Index best_v = kInvalidIndex;
+      double best_d = f.d;
+      Vec3 best_y;
+      for (Index v : m.triangles[f.face]) {
+        if (locked[v] || next_b[v] != kInvalidIndex || prev_b[v] != kInvalidIndex) continue;
+        const Vec3 x0 = m.positions[v];
+        Vec3 normal;
+        for (Index c = corner_begin[v]; c < corner_begin[v + 1]; ++c) {
+          const Triangle& t = m.triangles[face_of(corners[c])];
+          normal = normal + cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]);
+        }
+        if (dot(normal, sample_normal[f.w]) <= 0) continue;   // another sheet
+        const double q0 = quality(v, x0, false), dev0 = deviation(v, x0);
+        std::vector<Vec3> under;
+        std::vector<double> under_before;
+        // Part of the way towards z, on the surface: the whole way mostly folds a triangle.
+        for (double t : {1.0, 0.75, 0.5, 0.35, 0.25}) {
+          const SurfacePoint sp = index.closest(x0 + t * (z - x0));
+          if (sp.face == kInvalidIndex) continue;
+          const Vec3 y = sp.position;
+          const double dz = ring_distance(v, z, y);
+          if (dz >= 0.98 * best_d) continue;
+          // No new angle below 30 degrees nor below the mesh's minimum.
+          if (quality(v, y, true) < std::min(q0, std::max(mesh_min, 30.0 * kPi / 180.0))) continue;
+          if (deviation(v, y) > std::max(dev0, p.pull_distance)) continue;
+          if (under.empty()) {
+            under = under_points(v, x0, normal);
+            for (Vec3 u : under) under_before.push_back(ring_distance(v, u, x0));
+          }
+          bool ok = true;
+          for (std::size_t i = 0; i < under.size() && ok; ++i)
+            ok = ring_distance(v, under[i], y) <= std::max(under_before[i], p.pull_distance);
+          if (ok) best_v = v, best_d = dz, best_y = y;
+        }
+      }
+      if (best_v == kInvalidIndex) continue;
+      m.positions[best_v] = best_y;
+      ++pulled;
+      for (Index c = corner_begin[best_v]; c < corner_begin[best_v + 1]; ++c)
+        for (Index w : m.triangles[face_of(corners[c])]) locked[w] = true;
+    }
+    return pulled;
+  };
+  if (p.pull_distance > 0)
+    for (int round = 0; round < 2; ++round) {
+      const std::size_t n = pull_round();
+      counts.pulls += n;
+      if (n == 0) break;
+    }
   return counts;
 }
 

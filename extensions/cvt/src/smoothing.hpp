@@ -13,11 +13,14 @@ struct SmoothParams {
   int passes = 8;
   double below_angle = 35.0;     // degrees: vertices whose worst incident angle is below this are tried
   double max_deviation = 0;      // model units: a moved triangle's centroid may lie this far off the surface
-  double flip_max_normal_angle = 20.0;   // < 0: no flips
+  double flip_max_normal_angle = 20.0;
+  // Model units; 0: off. After the passes, surface points farther than this from the mesh pull
+  // the best corner of their nearest triangle onto them (see smoothing.cpp).
+  double pull_distance = 0;   // < 0: no flips
 };
 
 struct SmoothCounts {
-  std::size_t moves = 0, boundary_moves = 0, flips = 0;
+  std::size_t moves = 0, boundary_moves = 0, flips = 0, pulls = 0;
 };
 
 // `surface`: the surface the vertices lie on (the working mesh: the input, split). Interior

@@ -42,6 +42,10 @@ struct RemeshOptions {
   // boundary curve are split at the curve's farthest point (a new vertex without a site) when
   // that makes no angle below min(the triangle's, 30 degrees). 0: no splits.
   double boundary_chord = 2.5e-3;
+  // Last: points of the input (the working mesh's vertices) farther than this fraction of the
+  // diagonal from the output pull the best corner of their nearest triangle onto them, under
+  // the same checks with this bound and without lowering the mesh's minimum angle. 0: off.
+  double pull_distance = 3e-3;
 };
 
 struct RemeshStats {
@@ -56,6 +60,7 @@ struct RemeshStats {
   std::size_t boundary_collapses = 0;   // short boundary edges collapsed (one vertex fewer each)
   std::size_t boundary_splits = 0;      // boundary edges split (one vertex more each)
   std::size_t boundary_snaps = 0;       // boundary vertices moved onto the input's boundary curve
+  std::size_t pulls = 0;                // vertices pulled onto input points far from the output
 };
 
 struct RemeshResult {
