@@ -24,6 +24,8 @@ using detail::Vec2;
 using detail::segment_distance;
 
 constexpr double kPi = 3.14159265358979323846;
+// How far past a flat vertex (in mean edge lengths) a wave is still carried straight on.
+constexpr double kFlatMiss = 0.5;
 // Where a face compares its waves: the barycentric grid of order kGrid (corners first), so
 // a wave is kept wherever it is shortest at one of them. On a plane a wave is needed exactly
 // where its segment is the nearest one for some point of the face; a finer grid misses fewer of
@@ -338,12 +340,14 @@ class Propagation {
     const Vec2 N = detail::nearest_on_segment(Q, a, b);
     const double eps = 1e-9 * scale_;
     int kind = 0;   // 0: straight on, 1: bend at A, 2: bend at B
+    double miss = 0;  // how far beyond the bend's end the probe's line crosses the edge's line
     const bool same_side = N.y > eps;
     if (!same_side) {
       const double denom = Q.y - N.y;
       if (denom > 0) {
         const double xc = Q.x + (N.x - Q.x) * (Q.y / denom);
         kind = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
+        miss = kind == 1 ? -xc : xc - e1;
       }
     } else {
       // The nearest point lies on t's side: the segment was carried round a vertex. Bend at
@@ -354,9 +358,13 @@ class Propagation {
       const double via_b = segment_distance(B, a, b) + detail::length(Q - B);
       kind = via_a <= via_b ? 1 : 2;
     }
+    // A flat end carries the wave straight on only where the line passes it closely: as in
+    // the core (propagation.hpp, kFlatMiss), farther out it could pass a curved vertex on the
+    // wrong side.
     const Triangle& tt = mesh_.triangles[t];
-    if (!same_side && kind == 1 && flat_[tt[k]]) kind = 0;
-    if (!same_side && kind == 2 && flat_[tt[(k + 1) % 3]]) kind = 0;
+    const bool near_end = miss <= kFlatMiss * scale_;
+    if (!same_side && near_end && kind == 1 && flat_[tt[k]]) kind = 0;
+    if (!same_side && near_end && kind == 2 && flat_[tt[(k + 1) % 3]]) kind = 0;
 
     Wave n;
     n.segment = w.segment;
