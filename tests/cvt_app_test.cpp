@@ -36,6 +36,13 @@ TEST(CvtApp, RemeshRegionsAndStats) {
   EXPECT_GT(stats["timings"]["compute"].num, 0);
   EXPECT_GT(stats["timings"]["remesh"].num, 0);
 
+  // A closed surface: the post-pass neither collapses nor splits boundary edges.
+  EXPECT_EQ(stats["remesh"]["boundary_collapses"].num, 0);
+  EXPECT_EQ(stats["remesh"]["boundary_splits"].num, 0);
+  EXPECT_GE(stats["remesh"]["smoothing_moves"].num, 0);
+  EXPECT_TRUE(stats["settings"]["smooth"].b);
+  EXPECT_EQ(stats["settings"]["smooth_below"].num, 40);
+
   const io::ReadResult mesh = io::read_mesh(out.string());
   EXPECT_EQ(double(mesh.mesh.num_vertices()), sites);
   const TopologyReport t = analyze_topology(mesh.mesh, build_connectivity(mesh.mesh));
@@ -56,6 +63,23 @@ TEST(CvtApp, RemeshRegionsAndStats) {
   for (bool u : used) count += u;
   EXPECT_GT(count, std::size_t(0.8 * sites));   // most regions hold an input vertex
   EXPECT_EQ(reg.attributes.colors.size(), 4494u);
+}
+
+TEST(CvtApp, NoSmoothKeepsTheSites) {
+  // --no-smooth: the dual as it is, every vertex a site; no post-pass counts.
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.ply";
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 300 --iterations 5 --no-smooth --stats - -o " +
+                              quote(out.string()),
+                          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue stats = parse_json(r.out);
+  EXPECT_FALSE(stats["settings"]["smooth"].b);
+  EXPECT_EQ(stats["remesh"]["smoothing_moves"].num, 0);
+  EXPECT_EQ(stats["remesh"]["pulls"].num, 0);
+  EXPECT_EQ(stats["remesh"]["vertices"].num, stats["result"]["sites"].num);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 300 --smooth-below 0 -o " + quote(out.string()), dir).exit_code,
+            2);   // out of range
 }
 
 TEST(CvtApp, EdgeLengthAndGlb) {
