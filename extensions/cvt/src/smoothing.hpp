@@ -1,6 +1,6 @@
 #pragma once
-// Angle-raising vertex moves on the dual, kept on the input surface (see remesh.hpp,
-// RemeshOptions::smooth). Vertices and connectivity do not change; only positions move.
+// Angle-raising vertex moves on the dual and distance-lowering pulls, kept on the input
+// surface (see remesh.hpp, RemeshOptions::smooth). Only positions move (and flips).
 #include "boundary_curves.hpp"
 
 #include <gsp/mesh.hpp>
@@ -11,12 +11,12 @@ namespace gsp::cvt::detail {
 
 struct SmoothParams {
   int passes = 8;
-  double below_angle = 35.0;     // degrees: vertices whose worst incident angle is below this are tried
-  double max_deviation = 0;      // model units: a moved triangle's centroid may lie this far off the surface
-  double flip_max_normal_angle = 20.0;
+  double below_angle = 40.0;     // degrees: vertices whose worst incident angle is below this are tried
+  double max_deviation = 0;      // model units: the surface checks' bound (see below)
+  double flip_max_normal_angle = 20.0;   // < 0: no flips
   // Model units; 0: off. After the passes, surface points farther than this from the mesh pull
-  // the best corner of their nearest triangle onto them (see smoothing.cpp).
-  double pull_distance = 0;   // < 0: no flips
+  // a corner of their nearest triangle part of the way towards them (see smoothing.cpp).
+  double pull_distance = 0;
 };
 
 struct SmoothCounts {
@@ -24,12 +24,13 @@ struct SmoothCounts {
 };
 
 // `surface`: the surface the vertices lie on (the working mesh: the input, split). Interior
-// vertices move towards the mean of their neighbours in the tangent plane, then onto the
-// surface (Embree closest point); boundary vertices slide along the surface's boundary curve
-// towards the arc-length midpoint of their two boundary neighbours. A move (full, half or
-// quarter step) is kept only if it raises the smallest angle of the vertex's triangles, folds
-// none of them, and keeps their centroids within max(max_deviation, before) of the surface;
-// so the mesh's minimum angle never falls. Edge flips (improve_by_flips) follow every pass.
+// vertices move towards the mean of their neighbours in the tangent plane, then by a pattern
+// search on the smallest angle of their triangles, every point projected onto the surface
+// (Embree closest point); boundary vertices slide along the surface's boundary curve the
+// same way. A point is kept only if it raises the smallest angle of the vertex's triangles,
+// folds none of them, keeps them within max(max_deviation, before) of the surface and the
+// surface under them within the same bound of them; so the mesh's minimum angle never
+// falls. Edge flips (improve_by_flips) follow every pass; then the pulls.
 // `curves`: the boundary loops of `surface`. `samples`: a mesh of the same surface whose
 // vertices are dense enough to stand for it in the check that the surface stays close to the
 // moved triangles (the working mesh; `surface` itself can be the coarser input). Vertices
