@@ -13,9 +13,10 @@
 
 namespace gsp::detail {
 
-inline constexpr Index kSourceMask = 0x1fffffffu;    // tag bits 0..28: source index
-inline constexpr Index kNoSource = kSourceMask;      // unreached
-inline constexpr Index kFlatCorner0 = 0x20000000u;   // tag bit 29 + i: corner i is flat
+inline constexpr Index kSourceMask = 0x03ffffffu;     // tag bits 0..25: source index
+inline constexpr Index kNoSource = kSourceMask;       // unreached
+inline constexpr Index kFlatCorner0 = 0x04000000u;    // tag bit 26 + i: corner i is flat
+inline constexpr Index kSaddleCorner0 = 0x20000000u;  // tag bit 29 + i: corner i is a saddle
 
 template <class Real>
 struct FaceRecord {
@@ -24,11 +25,12 @@ struct FaceRecord {
   Real sigma;     // path length behind the virtual source
   Real dT;        // distance of the centroid (the key of every comparison)
   Real len[3];    // len[i] = |corner i -> corner i+1|, in mean edge lengths
-  Index tag;      // source index and flat-corner bits
+  Index tag;      // source index, flat-corner and saddle-corner bits
 
   Index source() const { return tag & kSourceMask; }
   bool reached() const { return source() != kNoSource; }
   bool flat_corner(Index i) const { return (tag & (kFlatCorner0 << i)) != 0; }
+  bool saddle_corner(Index i) const { return (tag & (kSaddleCorner0 << i)) != 0; }
 };
 
 // The face seen from its halfedge j: A = corner j at the origin, B = corner j+1 at (e1, 0),

@@ -129,10 +129,10 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
       nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
       nonmanifold.push_back(to_vertex(m.mesh, conn.edge_halfedge[e]));
     }
-  m.flat = detail::flat_vertices(m.mesh, m.input.ring, m.skipped_face, nonmanifold,
+  m.vertex_kind = detail::vertex_kinds(m.mesh, m.input.ring, m.skipped_face, nonmanifold,
                                  m.custom_lengths ? &m.input.length : nullptr);
   if (options.intrinsic_delaunay) m.build_delaunay();
-  (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.flat);
+  (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.vertex_kind);
   auto t2 = Clock::now();
   m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
   m.timings.build = std::chrono::duration<double>(t2 - t1).count();
@@ -185,7 +185,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
                                          const GeodesicOptions& options) const {
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
-  std::vector<FaceRecord<Real>> state = take_state(tri.records<Real>(scale, flat));   // this query's copy
+  std::vector<FaceRecord<Real>> state = take_state(tri.records<Real>(scale, vertex_kind));   // this query's copy
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;

@@ -1,5 +1,5 @@
 #pragma once
-// Intrinsic geometry the solver prepares once per mesh (internal): edge lengths, flat vertices,
+// Intrinsic geometry the solver prepares once per mesh (internal): edge lengths, vertex kinds,
 // canonical face frames. Every face has a canonical 2D frame: corner 0 at the origin, corner 1
 // on the +x axis, corner 2 above it (y >= 0); a face's virtual source is a point of that frame.
 // Lengths are divided by the mean edge length so the speed-limiter step f = 1 is one mean edge.
@@ -11,17 +11,24 @@
 
 namespace gsp::detail {
 
-// Per vertex: true where no shortest path can bend — interior vertices whose angle sum is 2 pi
-// and boundary vertices whose angle sum is at most pi (within a relative 1e-6). Unfolding
-// around such a vertex is the same from either side, so a source that the visibility probe
-// sees past the vertex is still exact when carried straight on. This makes GSP exact on flat
-// and developable regions (planar CAD faces, fans) whatever the heuristic says.
+// Per vertex, what the visibility test does at it (propagation.hpp):
+// - kFlatVertex where no shortest path can bend — interior vertices whose angle sum is 2 pi
+//   and boundary vertices whose angle sum is at most pi (within a relative 1e-6). Unfolding
+//   around such a vertex is the same from either side, so a source that the visibility probe
+//   sees just past the vertex is still exact when carried straight on. This makes GSP exact on
+//   flat and developable regions (planar CAD faces, fans) whatever the heuristic says.
+// - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
+//   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
+//   wrong side is shorter than any path on the surface, so the probe is moved towards the
+//   opposite corner there (stricter).
 // The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
 // given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
-std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const std::vector<Index>& ring,
-                                        const std::vector<bool>& skipped_face,
-                                        const std::vector<Index>& nonmanifold_vertices,
-                                        const std::vector<double>* length = nullptr);
+inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2;
+inline constexpr double kSaddleExcess = 0.01;
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<Index>& ring,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& nonmanifold_vertices,
+                                       const std::vector<double>* length = nullptr);
 
 // Corner positions of face f in its canonical frame (scaled lengths), in double.
 void canonical_corners(const std::vector<double>& length, Index f, double scale, double out[3][2]);

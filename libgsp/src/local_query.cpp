@@ -68,7 +68,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   }();
   const Triangulation& tri = input;
   const double scale = 1.0 / mean_edge;
-  const std::vector<FaceRecord<Real>>& pristine = tri.records<Real>(scale, flat);
+  const std::vector<FaceRecord<Real>>& pristine = tri.records<Real>(scale, vertex_kind);
   if (buf.state.empty()) buf.state = pristine;   // first query of this precision: one full copy
 
   LocalField result;
@@ -80,7 +80,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   struct Restore {
     LocalWorkspace::State& ws;
     LocalBuffers<Real>& buf;
-    // Only the source fields change in a query (lengths and flat-corner bits stay): writing
+    // Only the source fields change in a query (lengths and corner bits stay): writing
     // their initial values back needs no read of the pristine records (cold in cache).
     void reset(Index f) {
       FaceRecord<Real>& r = buf.state[f];

@@ -30,7 +30,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
   const std::vector<double>& length = tri.length;
   const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
   const double scale = 1.0 / mean_edge;
-  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^29 - 1)");
+  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^26 - 1)");
   struct FacePoint {
     Index face, label;
     double w[3];

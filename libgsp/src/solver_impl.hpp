@@ -40,17 +40,19 @@ struct Triangulation {
   mutable std::vector<FaceRecord<float>> records_float;
   mutable std::vector<FaceRecord<double>> records_double;
 
-  // The per-face records every query starts from (lengths, flat corners, nothing reached),
+  // The per-face records every query starts from (lengths, flat and saddle corners, nothing
+  // reached),
   // built on first use per precision.
   template <class Real>
-  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& flat) const {
+  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& kind) const {
     auto build = [&] {
       const Real inf = std::numeric_limits<Real>::infinity();
       std::vector<FaceRecord<Real>> r(triangles.size());
       for (std::size_t f = 0; f < triangles.size(); ++f) {
         Index tag = detail::kNoSource;
         for (Index i = 0; i < 3; ++i)
-          if (flat[triangles[f][i]]) tag |= detail::kFlatCorner0 << i;
+          if (kind[triangles[f][i]] == detail::kFlatVertex) tag |= detail::kFlatCorner0 << i;
+          else if (kind[triangles[f][i]] == detail::kSaddleVertex) tag |= detail::kSaddleCorner0 << i;
         r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
                                  Real(scale * length[3 * f + 2])}, tag};
       }
@@ -100,7 +102,7 @@ struct GeodesicSolver::Impl {
   // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
   // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
   std::vector<Index> bridge_vertices;
-  std::vector<std::uint8_t> flat;  // per vertex: no geodesic can bend there (intrinsic_geometry.hpp)
+  std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
   double mean_edge = 1;
   bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
   VisibilityHeuristic heuristic;
