@@ -1,6 +1,9 @@
 #include "flips.hpp"
 
+#include <gsp/closest_point.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -66,6 +69,58 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
     flips += this_pass;
     if (this_pass == 0) break;
   }
+  return flips;
+}
+
+std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
+                        const std::function<double(Vec3)>& distance_to_surface,
+                        const std::function<Vec3(Vec3)>& nearest) {
+  const double cap = cap_angle_deg * 3.14159265358979323846 / 180.0;
+  std::unordered_map<std::uint64_t, Index> directed;
+  directed.reserve(3 * m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f)
+    for (Index i = 0; i < 3; ++i) directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
+  auto edge_exists = [&](Index a, Index b) { return directed.count(key(a, b)) || directed.count(key(b, a)); };
+  auto pair_distance = [&](Vec3 z, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {   // to (p0,p1,p2) and (p0,p1,p3)
+    const std::array<double, 3> u = closest_point_on_triangle(z, p0, p1, p2), v = closest_point_on_triangle(z, p0, p1, p3);
+    return std::min(distance(z, u[0] * p0 + u[1] * p1 + u[2] * p2), distance(z, v[0] * p0 + v[1] * p1 + v[2] * p3));
+  };
+  std::size_t flips = 0;
+  for (Index f = 0; f < m.num_faces(); ++f)
+    for (Index i = 0; i < 3; ++i) {
+      const Triangle t = m.triangles[f];
+      const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+      const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c];
+      if (angle_at(pc, pa, pb) <= cap) continue;
+      const auto it = directed.find(key(b, a));
+      if (it == directed.end()) continue;
+      const Index g = it->second / 3, j = it->second % 3;
+      if (g == f) continue;
+      const Index d = m.triangles[g][(j + 2) % 3];
+      if (d == c || edge_exists(c, d)) continue;
+      const Vec3 pd = m.positions[d];
+      const double before = std::min(min_angle(pa, pb, pc), min_angle(pb, pa, pd));
+      const double after = std::min(min_angle(pa, pd, pc), min_angle(pd, pb, pc));
+      if (after <= before) continue;
+      const Vec3 n = normal(pa, pb, pc) + normal(pb, pa, pd);
+      if (dot(normal(pa, pd, pc), n) <= 0 || dot(normal(pd, pb, pc), n) <= 0) continue;
+      const Vec3 old_mid = 0.5 * (pa + pb), new_mid = 0.5 * (pc + pd);
+      if (distance_to_surface(new_mid) > std::max(bound, distance_to_surface(old_mid))) continue;
+      const Vec3 z = nearest(old_mid);
+      if (pair_distance(z, pc, pd, pa, pb) > std::max(bound, pair_distance(z, pa, pb, pc, pd))) continue;
+      for (Index k = 0; k < 3; ++k) {
+        directed.erase(key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
+        directed.erase(key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
+      }
+      m.triangles[f] = {a, d, c};
+      m.triangles[g] = {d, b, c};
+      for (Index k = 0; k < 3; ++k) {
+        directed[key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
+        directed[key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
+      }
+      ++flips;
+      break;
+    }
   return flips;
 }
 

@@ -197,6 +197,13 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
   // A vertex is tried again only when its triangles changed since its last try (a neighbour
   // moved, a flip): the search is deterministic, it would find nothing new.
   std::vector<bool> dirty(V, true);
+  if (p.flip_max_normal_angle >= 0) {
+    const std::size_t caps = remove_caps(
+        m, 120.0, p.max_deviation, [&](Vec3 x) { return index.closest(x).distance; },
+        [&](Vec3 x) { return index.closest(x).position; });
+    counts.flips += caps;
+    if (caps) rebuild();
+  }
   for (int pass = 0; pass < p.passes; ++pass) {
     std::size_t moved = 0;
     for (Index v = 0; v < V; ++v) {

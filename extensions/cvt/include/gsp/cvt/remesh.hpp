@@ -24,16 +24,17 @@ struct RemeshOptions {
   double flip_max_normal_angle = 20.0;
   // The post-pass (docs/cvt.md), in this order: boundary vertices off the input's boundary
   // curve are snapped onto it; boundary edges opposite a triangle's smallest angle (below
-  // `smooth_below_angle`) are collapsed where that raises the angles around them; boundary
-  // edges whose chord cuts the input's boundary curve by more than `boundary_chord` are split;
-  // then vertices whose triangles have an angle below `smooth_below_angle` degrees move:
-  // interior ones on the input surface (Embree closest point), boundary ones along the input's
-  // boundary curve, by a search on the smallest angle of their triangles. A move is kept only
-  // if it raises that angle, folds nothing, and keeps the triangles within
-  // max(smooth_max_deviation * diagonal, before) of the input and the input within the same
-  // bound of the triangles. Flips again after every pass. Every vertex stays on the input
-  // surface and the topology is unchanged; the vertex count changes by the collapses and
-  // splits (reported).
+  // min(`smooth_below_angle`, 30)) are collapsed where that raises the angles around them;
+  // boundary edges whose chord cuts the input's boundary curve by more than `boundary_chord`
+  // are split; edges opposite an angle above 120 degrees are flipped where the surface stays
+  // close (caps across thin folds); then vertices whose triangles have an angle below
+  // `smooth_below_angle` degrees move: interior ones on the input surface (Embree closest
+  // point), boundary ones along the input's boundary curve, by a search on the smallest angle
+  // of their triangles. A move is kept only if it raises that angle, folds nothing, and keeps
+  // the triangles within max(smooth_max_deviation * diagonal, before) of the input and the
+  // input within the same bound of the triangles. Flips again after every pass; last the
+  // pulls (`pull_distance`). Every vertex stays on the input surface and the topology is
+  // unchanged; the vertex count changes by the collapses and splits (reported).
   bool smooth = true;
   int smooth_passes = 8;
   double smooth_below_angle = 40.0;
