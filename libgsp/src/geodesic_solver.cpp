@@ -218,7 +218,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   Real corner[3 * kBlock];
   for (std::size_t begin = 0; begin < nf; begin += kBlock) {
     const std::size_t end = std::min(nf, begin + kBlock);
-    for (std::size_t fi = begin; fi < end; ++fi) corner_distances(state[fi], &corner[3 * (fi - begin)]);
+    corner_distances(&state[begin], end - begin, corner);
     for (std::size_t fi = begin; fi < end; ++fi) {
       const bool reached = state[fi].reached();
       faces_reached += reached;
