@@ -8,6 +8,7 @@
 #include <gsp/geodesics.hpp>
 #include <gsp/topology.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -233,23 +234,45 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     }
   }
   result.stats.faces_reached = faces_reached;
-  std::vector<double> vdist(nv);
-  for (std::size_t v = 0; v < nv; ++v) vdist[v] = double(vmin[v]) * mean_edge;
-  // A vertex source's own value is exact and wins ties (against faces, and the first source
-  // against later ones at the same vertex: hence backwards).
-  for (auto vs = vertex_seeds.rbegin(); vs != vertex_seeds.rend(); ++vs)
-    if (vs->value <= vdist[vs->vertex]) vdist[vs->vertex] = vs->value, vlabel[vs->vertex] = vs->label;
-  // Results in the input's order, gathered (sequential writes, reads in layout order).
+  // A vertex source's own value is exact and wins ties against the faces; of several sources
+  // at one vertex the smallest value, the first source on ties.
+  std::vector<VertexSeed> seeds = vertex_seeds;
+  std::stable_sort(seeds.begin(), seeds.end(), [](const VertexSeed& a, const VertexSeed& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.value < b.value;
+  });
+  seeds.erase(std::unique(seeds.begin(), seeds.end(),
+                          [](const VertexSeed& a, const VertexSeed& b) { return a.vertex == b.vertex; }),
+              seeds.end());
+  // Results in the input's order, gathered (sequential writes, reads in layout order), then the
+  // few vertex sources on top.
   const double cutoff = options.max_distance;
+  const double inf_d = std::numeric_limits<double>::infinity();
   result.vertex_distance.resize(nv);
   result.vertex_source.resize(nv);
   for (std::size_t in = 0; in < nv; ++in) {
     const Index v = layout.vertex_rank[in];
-    const bool keep = vdist[v] <= cutoff;
-    result.vertex_distance[in] = keep ? vdist[v] : std::numeric_limits<double>::infinity();
+    const double d = double(vmin[v]) * mean_edge;
+    const bool keep = d <= cutoff;
+    result.vertex_distance[in] = keep ? d : inf_d;
     result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
   }
+  for (const VertexSeed& vs : seeds) {
+    if (!(vs.value <= double(vmin[vs.vertex]) * mean_edge)) continue;
+    const Index in = layout.vertex_order[vs.vertex];
+    const bool keep = vs.value <= cutoff;
+    result.vertex_distance[in] = keep ? vs.value : inf_d;
+    result.vertex_source[in] = keep ? vs.label : kInvalidIndex;
+  }
   if (options.want_face_distances) {
+    // On the flipped triangulation an input face's value comes from its corners' distances
+    // (before the cutoff, the vertex sources included), by layout index.
+    std::vector<double> vdist;
+    if (&tri != &input) {
+      vdist.resize(nv);
+      for (std::size_t v = 0; v < nv; ++v) vdist[v] = double(vmin[v]) * mean_edge;
+      for (const VertexSeed& vs : seeds)
+        if (vs.value <= vdist[vs.vertex]) vdist[vs.vertex] = vs.value, vlabel[vs.vertex] = vs.label;
+    }
     result.face_distance.resize(nf);
     result.face_source.resize(nf);
     for (std::size_t in = 0; in < nf; ++in) {
