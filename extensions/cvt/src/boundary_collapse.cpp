@@ -1,4 +1,5 @@
 #include "boundary_collapse.hpp"
+#include "triangle_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,10 +11,6 @@ namespace gsp::cvt::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); }
-
-std::uint64_t key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }
 
 }  // namespace
 
@@ -30,17 +27,12 @@ std::size_t collapse_boundary_edges(TriangleMesh& m, const BoundaryCurves& curve
     for (Index f = 0; f < m.num_faces(); ++f)
       for (Index i = 0; i < 3; ++i) {
         faces_of[m.triangles[f][i]].push_back(f);
-        directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = f;
+        directed[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = f;
       }
-    std::vector<Index> next_b(V, kInvalidIndex), prev_b(V, kInvalidIndex);
-    std::vector<int> out_count(V, 0);
-    for (const Triangle& t : m.triangles)
-      for (Index i = 0; i < 3; ++i) {
-        const Index a = t[i], b = t[(i + 1) % 3];
-        if (directed.count(key(b, a))) continue;
-        next_b[a] = b, prev_b[b] = a;
-        ++out_count[a];
-      }
+    BoundaryLinks links = boundary_links(m, directed);
+    std::vector<Index>& next_b = links.next;
+    std::vector<Index>& prev_b = links.prev;
+    const std::vector<int>& out_count = links.out_count;
     std::vector<std::size_t> loop_of(V, std::size_t(-1));
     std::vector<double> arc(V, 0);
     for (std::size_t v = 0; v < V; ++v) {

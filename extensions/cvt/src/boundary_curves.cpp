@@ -1,4 +1,5 @@
 #include "boundary_curves.hpp"
+#include "triangle_geometry.hpp"
 
 #include <gsp/connectivity.hpp>
 
@@ -7,18 +8,6 @@
 #include <unordered_map>
 
 namespace gsp::cvt::detail {
-
-namespace {
-
-// Distance from p to segment [a, b].
-double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 d = b - a;
-  const double dd = dot(d, d);
-  const double t = dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
-  return distance(p, a + t * d);
-}
-
-}  // namespace
 
 BoundaryCurves::BoundaryCurves(const TriangleMesh& m) {
   const Connectivity conn = build_connectivity(m);

@@ -1,4 +1,5 @@
 #include "boundary_fit.hpp"
+#include "triangle_geometry.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,19 +12,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); }
-
-double min_angle(Vec3 a, Vec3 b, Vec3 c) { return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}); }
-
-std::uint64_t key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }
-
-double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 d = b - a;
-  const double dd = dot(d, d);
-  const double t = dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
-  return distance(p, a + t * d);
-}
-
 }  // namespace
 
 std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves, double min_angle_deg) {
@@ -32,14 +20,14 @@ std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves
   const std::size_t V = m.num_vertices();
   std::unordered_set<std::uint64_t> directed;
   for (const Triangle& t : m.triangles)
-    for (Index i = 0; i < 3; ++i) directed.insert(key(t[i], t[(i + 1) % 3]));
+    for (Index i = 0; i < 3; ++i) directed.insert(edge_key(t[i], t[(i + 1) % 3]));
   std::vector<double> boundary_length(V, 0);   // of the boundary edges at the vertex
   std::vector<std::vector<Index>> faces_of(V);
   for (Index f = 0; f < m.num_faces(); ++f) {
     const Triangle& t = m.triangles[f];
     for (Index i = 0; i < 3; ++i) {
       faces_of[t[i]].push_back(f);
-      if (directed.count(key(t[(i + 1) % 3], t[i]))) continue;
+      if (directed.count(edge_key(t[(i + 1) % 3], t[i]))) continue;
       const double len = distance(m.positions[t[i]], m.positions[t[(i + 1) % 3]]);
       boundary_length[t[i]] = std::max(boundary_length[t[i]], len);
       boundary_length[t[(i + 1) % 3]] = std::max(boundary_length[t[(i + 1) % 3]], len);
@@ -85,14 +73,14 @@ std::size_t split_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, 
   for (int pass = 0; pass < passes; ++pass) {
     std::unordered_set<std::uint64_t> directed;
     for (const Triangle& t : m.triangles)
-      for (Index i = 0; i < 3; ++i) directed.insert(key(t[i], t[(i + 1) % 3]));
+      for (Index i = 0; i < 3; ++i) directed.insert(edge_key(t[i], t[(i + 1) % 3]));
     std::size_t splits = 0;
     const std::size_t faces = m.num_faces();
     for (Index f = 0; f < faces; ++f)
       for (Index i = 0; i < 3; ++i) {
         const Triangle t = m.triangles[f];
         const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
-        if (directed.count(key(b, a))) continue;
+        if (directed.count(edge_key(b, a))) continue;
         std::size_t la = 0, lb = 0;
         double sa = 0, sb = 0, da = 0, db = 0;
         const double len = distance(m.positions[a], m.positions[b]);

@@ -1,4 +1,5 @@
 #include "flips.hpp"
+#include "triangle_geometry.hpp"
 
 #include <gsp/closest_point.hpp>
 
@@ -11,24 +12,36 @@ namespace gsp::cvt::detail {
 
 namespace {
 
-std::uint64_t key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }
+// Directed edge (a, b) -> 3 * face + corner of a, kept up to date through flips.
+struct DirectedEdges {
+  std::unordered_map<std::uint64_t, Index> map;
 
-double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); }
-
-double min_angle(Vec3 a, Vec3 b, Vec3 c) { return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}); }
-
-Vec3 normal(Vec3 a, Vec3 b, Vec3 c) { return cross(b - a, c - a); }
+  explicit DirectedEdges(const TriangleMesh& m) {
+    map.reserve(3 * m.num_faces());
+    for (Index f = 0; f < m.num_faces(); ++f)
+      for (Index i = 0; i < 3; ++i) map[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
+  }
+  bool exists(Index a, Index b) const { return map.count(edge_key(a, b)) || map.count(edge_key(b, a)); }
+  // Faces f = (a, b, c) and g = (b, a, d) become (a, d, c) and (d, b, c).
+  void flip(TriangleMesh& m, Index f, Index g, Index a, Index b, Index c, Index d) {
+    for (Index k = 0; k < 3; ++k) {
+      map.erase(edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
+      map.erase(edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
+    }
+    m.triangles[f] = {a, d, c};
+    m.triangles[g] = {d, b, c};
+    for (Index k = 0; k < 3; ++k) {
+      map[edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
+      map[edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
+    }
+  }
+};
 
 }  // namespace
 
 std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int max_passes) {
   const double cos_limit = std::cos(max_normal_angle_deg * 3.14159265358979323846 / 180.0);
-  // Directed edge (a, b) -> 3 * face + corner of a.
-  std::unordered_map<std::uint64_t, Index> directed;
-  directed.reserve(3 * m.num_faces());
-  for (Index f = 0; f < m.num_faces(); ++f)
-    for (Index i = 0; i < 3; ++i) directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
-  auto edge_exists = [&](Index a, Index b) { return directed.count(key(a, b)) || directed.count(key(b, a)); };
+  DirectedEdges directed(m);
   std::size_t flips = 0;
   for (int pass = 0; pass < max_passes; ++pass) {
     std::size_t this_pass = 0;
@@ -36,12 +49,12 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
       for (Index i = 0; i < 3; ++i) {
         const Triangle t = m.triangles[f];
         const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
-        const auto it = directed.find(key(b, a));
-        if (it == directed.end()) continue;   // boundary or inconsistently oriented
+        const auto it = directed.map.find(edge_key(b, a));
+        if (it == directed.map.end()) continue;   // boundary or inconsistently oriented
         const Index g = it->second / 3, j = it->second % 3;
         if (g == f) continue;
         const Index d = m.triangles[g][(j + 2) % 3];
-        if (d == c || edge_exists(c, d)) continue;
+        if (d == c || directed.exists(c, d)) continue;
         const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c], pd = m.positions[d];
         if (angle_at(pc, pa, pb) + angle_at(pd, pb, pa) <= 3.14159265358979323846 + 1e-12) continue;
         const double before = std::min(min_angle(pa, pb, pc), min_angle(pb, pa, pd));
@@ -54,16 +67,7 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
         if (dot(n1, n2) < cos_limit * norm(n1) * norm(n2)) continue;
         const Vec3 n = n1 + n2;
         if (dot(m1, n) <= 0 || dot(m2, n) <= 0) continue;
-        for (Index k = 0; k < 3; ++k) {
-          directed.erase(key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
-          directed.erase(key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
-        }
-        m.triangles[f] = {a, d, c};
-        m.triangles[g] = {d, b, c};
-        for (Index k = 0; k < 3; ++k) {
-          directed[key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
-          directed[key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
-        }
+        directed.flip(m, f, g, a, b, c, d);
         ++this_pass;
       }
     flips += this_pass;
@@ -76,11 +80,7 @@ std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
                         const std::function<double(Vec3)>& distance_to_surface,
                         const std::function<Vec3(Vec3)>& nearest) {
   const double cap = cap_angle_deg * 3.14159265358979323846 / 180.0;
-  std::unordered_map<std::uint64_t, Index> directed;
-  directed.reserve(3 * m.num_faces());
-  for (Index f = 0; f < m.num_faces(); ++f)
-    for (Index i = 0; i < 3; ++i) directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
-  auto edge_exists = [&](Index a, Index b) { return directed.count(key(a, b)) || directed.count(key(b, a)); };
+  DirectedEdges directed(m);
   auto pair_distance = [&](Vec3 z, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {   // to (p0,p1,p2) and (p0,p1,p3)
     const std::array<double, 3> u = closest_point_on_triangle(z, p0, p1, p2), v = closest_point_on_triangle(z, p0, p1, p3);
     return std::min(distance(z, u[0] * p0 + u[1] * p1 + u[2] * p2), distance(z, v[0] * p0 + v[1] * p1 + v[2] * p3));
@@ -92,12 +92,12 @@ std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
       const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
       const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c];
       if (angle_at(pc, pa, pb) <= cap) continue;
-      const auto it = directed.find(key(b, a));
-      if (it == directed.end()) continue;
+      const auto it = directed.map.find(edge_key(b, a));
+      if (it == directed.map.end()) continue;
       const Index g = it->second / 3, j = it->second % 3;
       if (g == f) continue;
       const Index d = m.triangles[g][(j + 2) % 3];
-      if (d == c || edge_exists(c, d)) continue;
+      if (d == c || directed.exists(c, d)) continue;
       const Vec3 pd = m.positions[d];
       const double before = std::min(min_angle(pa, pb, pc), min_angle(pb, pa, pd));
       const double after = std::min(min_angle(pa, pd, pc), min_angle(pd, pb, pc));
@@ -108,16 +108,7 @@ std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
       if (distance_to_surface(new_mid) > std::max(bound, distance_to_surface(old_mid))) continue;
       const Vec3 z = nearest(old_mid);
       if (pair_distance(z, pc, pd, pa, pb) > std::max(bound, pair_distance(z, pa, pb, pc, pd))) continue;
-      for (Index k = 0; k < 3; ++k) {
-        directed.erase(key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
-        directed.erase(key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
-      }
-      m.triangles[f] = {a, d, c};
-      m.triangles[g] = {d, b, c};
-      for (Index k = 0; k < 3; ++k) {
-        directed[key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
-        directed[key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
-      }
+      directed.flip(m, f, g, a, b, c, d);
       ++flips;
       break;
     }

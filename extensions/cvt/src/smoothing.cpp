@@ -1,4 +1,5 @@
 #include "smoothing.hpp"
+#include "triangle_geometry.hpp"
 
 #include "boundary_curves.hpp"
 #include "flips.hpp"
@@ -17,12 +18,6 @@ namespace gsp::cvt::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q - p, r - p)), dot(q - p, r - p)); }
-
-double min_angle(Vec3 a, Vec3 b, Vec3 c) { return std::min({angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)}); }
-
-std::uint64_t key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }
 
 // Points hashed into cubes of side `cell`, for the points within a radius of a query.
 class PointGrid {
@@ -93,17 +88,11 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
       for (Index i = 0; i < 3; ++i) corners[fill[m.triangles[f][i]]++] = 3 * f + i;
     directed.clear();
     for (Index f = 0; f < m.num_faces(); ++f)
-      for (Index i = 0; i < 3; ++i) directed[key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = f;
-    std::fill(next_b.begin(), next_b.end(), kInvalidIndex);
-    std::fill(prev_b.begin(), prev_b.end(), kInvalidIndex);
-    std::vector<int> out_count(V, 0);
-    for (const Triangle& t : m.triangles)
-      for (Index i = 0; i < 3; ++i) {
-        const Index a = t[i], b = t[(i + 1) % 3];
-        if (directed.count(key(b, a))) continue;
-        next_b[a] = b, prev_b[b] = a;
-        ++out_count[a];
-      }
+      for (Index i = 0; i < 3; ++i) directed[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = f;
+    BoundaryLinks links = boundary_links(m, directed);
+    next_b = std::move(links.next);
+    prev_b = std::move(links.prev);
+    const std::vector<int>& out_count = links.out_count;
     // A vertex where the boundary passes twice is left where it is.
     for (std::size_t v = 0; v < V; ++v)
       if (out_count[v] > 1) next_b[v] = prev_b[v] = kInvalidIndex;
