@@ -1,6 +1,8 @@
 #pragma once
 // Meshes and closed forms for the gsp::lines tests: irregular triangulations of a unit square
 // placed on a tilted plane in 3D, and the 3D distance from a point to a segment.
+#include "helpers/mesh_builders.hpp"
+
 #include <gsp/mesh.hpp>
 
 #include <algorithm>
@@ -35,18 +37,7 @@ inline TriangleMesh jittered_square(int n, unsigned seed, const Plane& plane = {
       if (j > 0 && j < n) y += jitter(rng) * h;
       m.positions.push_back(plane.at(x, y));
     }
-  auto id = [n](int i, int j) { return Index(i + j * (n + 1)); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Index a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (coin(rng)) {
-        m.triangles.push_back({a, b, c});
-        m.triangles.push_back({a, c, d});
-      } else {
-        m.triangles.push_back({a, b, d});
-        m.triangles.push_back({b, c, d});
-      }
-    }
+  add_grid_faces(m, n, [&](int, int) { return coin(rng); });
   return m;
 }
 

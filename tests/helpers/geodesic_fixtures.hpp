@@ -36,17 +36,7 @@ inline TriangleMesh jittered_grid(int n, double jitter, std::uint64_t seed) {
       p.y += jitter * (2 * rng.uniform() - 1);
     }
   m.triangles.clear();
-  for (Index j = 0; j < Index(n); ++j)
-    for (Index i = 0; i < Index(n); ++i) {
-      const Index a = j * row + i, b = a + 1, c = a + row + 1, d = a + row;
-      if (rng.uniform() < 0.5) {
-        m.triangles.push_back({a, b, c});
-        m.triangles.push_back({a, c, d});
-      } else {
-        m.triangles.push_back({a, b, d});
-        m.triangles.push_back({b, c, d});
-      }
-    }
+  add_grid_faces(m, n, [&](int, int) { return rng.uniform() < 0.5; });
   return m;
 }
 

@@ -29,20 +29,35 @@ inline TriangleMesh quad() {
   return m;
 }
 
+// The faces of an n x n grid of cells over (n+1)^2 vertices numbered row by row (index =
+// j * (n + 1) + i), appended cell by cell, rows first: with a = (i, j), b = (i+1, j),
+// c = (i+1, j+1), d = (i, j+1), cell (i, j) is split along a-c when along_ac(i, j), else along
+// b-d; counter-clockwise seen from +z. along_ac is called once per cell in that order (so a
+// random choice consumes its generator the same way every time).
+template <class AlongAc>
+inline void add_grid_faces(TriangleMesh& m, int n, AlongAc&& along_ac) {
+  const Index row = static_cast<Index>(n + 1);
+  for (Index j = 0; j < Index(n); ++j)
+    for (Index i = 0; i < Index(n); ++i) {
+      const Index a = j * row + i, b = a + 1, c = a + row + 1, d = a + row;
+      if (along_ac(int(i), int(j))) {
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+      } else {
+        m.triangles.push_back({a, b, d});
+        m.triangles.push_back({b, c, d});
+      }
+    }
+}
+
 // n x n unit squares over [0, n]^2 in z = 0, vertices row by row (index = j * (n + 1) + i),
 // each square split along its diagonal: (n+1)^2 vertices, 2 n^2 faces, 3 n^2 + 2 n edges,
 // 4 n boundary edges in one loop, Euler characteristic 1.
 inline TriangleMesh grid(int n) {
   TriangleMesh m;
-  const Index row = static_cast<Index>(n + 1);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) m.positions.push_back({double(i), double(j), 0});
-  for (Index j = 0; j < Index(n); ++j)
-    for (Index i = 0; i < Index(n); ++i) {
-      const Index a = j * row + i, b = a + 1, c = a + row + 1, d = a + row;
-      m.triangles.push_back({a, b, c});
-      m.triangles.push_back({a, c, d});
-    }
+  add_grid_faces(m, n, [](int, int) { return true; });
   return m;
 }
 
