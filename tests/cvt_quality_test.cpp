@@ -105,11 +105,8 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
   const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
   const cvt::ClosestPointIndex index(m);
   sampling::Random random(7);
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
+  const BoundingBox box = bounding_box(m);
+  const Vec3 lo = box.min, hi = box.max;
   for (int i = 0; i < 300; ++i) {
     // Points in a box 20% larger than the mesh's: inside, outside and far away.
     const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),

@@ -1,6 +1,7 @@
 #include <gsp/errors.hpp>
 #include <gsp/mesh.hpp>
 
+#include <algorithm>
 #include <string>
 
 namespace gsp {
@@ -19,6 +20,17 @@ void validate(const TriangleMesh& mesh) {
       if (v >= nv)
         throw InvalidInput("face " + std::to_string(f) + " names vertex " + std::to_string(v) +
                            " but there are only " + std::to_string(nv));
+}
+
+BoundingBox bounding_box(const TriangleMesh& mesh) {
+  BoundingBox b;
+  if (mesh.positions.empty()) return b;
+  b.min = b.max = mesh.positions.front();
+  for (const Vec3& p : mesh.positions) {
+    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
+    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
+  }
+  return b;
 }
 
 }  // namespace gsp

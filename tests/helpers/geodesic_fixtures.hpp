@@ -76,13 +76,6 @@ inline double relative_error(double approx, double exact) {
 }
 
 // The diagonal of the axis-aligned bounding box.
-inline double bbox_diagonal(const TriangleMesh& m) {
-  Vec3 lo = m.positions.at(0), hi = lo;
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return distance(lo, hi);
-}
+inline double bbox_diagonal(const TriangleMesh& m) { return bounding_box(m).diagonal(); }
 
 }  // namespace gsp::test

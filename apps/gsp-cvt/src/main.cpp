@@ -75,15 +75,6 @@ double parse_length(std::string text) {
   return percent ? -value : value;
 }
 
-double bbox_diagonal(const TriangleMesh& m) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return m.positions.empty() ? 0.0 : distance(lo, hi);
-}
-
 void run(cli::Context& ctx, const Options& o) {
   if ((o.vertices > 0) == !o.edge_length.empty()) throw cli::UsageError("give exactly one of --vertices and --edge-length");
   const double length_arg = o.edge_length.empty() ? 0.0 : parse_length(o.edge_length);
@@ -95,7 +86,7 @@ void run(cli::Context& ctx, const Options& o) {
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
   cvt::CvtOptions co;
   co.sites = o.vertices;
-  co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bbox_diagonal(in.mesh) : length_arg;
+  co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bounding_box(in.mesh).diagonal() : length_arg;
   co.max_iterations = o.iterations;
   co.tolerance = o.tolerance;
   co.over_relaxation = o.over_relaxation;

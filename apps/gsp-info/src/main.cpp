@@ -61,7 +61,7 @@ void run(gsp::cli::Context& ctx, Options& opt) {
   r.welded_vertices = welded->num_vertices();
   r.merged_vertices = raw.num_vertices() - welded->num_vertices();
 
-  r.bbox = info::bounding_box(raw);
+  r.bbox = gsp::bounding_box(raw);
   if (!r.point_cloud) {
     {
       auto t = ctx.timer().scope("build");

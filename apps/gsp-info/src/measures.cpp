@@ -34,17 +34,6 @@ Summary summarize(std::vector<double> values) {
   return s;
 }
 
-BoundingBox bounding_box(const TriangleMesh& mesh) {
-  BoundingBox b;
-  if (mesh.positions.empty()) return b;
-  b.min = b.max = mesh.positions.front();
-  for (const Vec3& p : mesh.positions) {
-    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
-    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
-  }
-  return b;
-}
-
 ShapeMeasures shape_measures(const TriangleMesh& mesh) {
   ShapeMeasures m;
   const std::vector<bool> degenerate = degenerate_faces(mesh);

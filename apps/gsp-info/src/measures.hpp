@@ -16,11 +16,6 @@ struct Summary {
 };
 Summary summarize(std::vector<double> values);
 
-struct BoundingBox {
-  Vec3 min, max;
-  double diagonal() const { return distance(min, max); }
-};
-BoundingBox bounding_box(const TriangleMesh& mesh);   // over all vertices; zero box if empty
 
 struct ShapeMeasures {
   std::size_t degenerate_faces = 0;     // repeated index or zero area: excluded below

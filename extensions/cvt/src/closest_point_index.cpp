@@ -61,12 +61,7 @@ ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make
     if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) s.faces.push_back(f);
   }
   if (s.faces.empty()) throw InvalidInput("closest point index: the mesh has no proper triangle");
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  s.origin = 0.5 * (lo + hi);
+  s.origin = bounding_box(mesh).center();
   s.device = rtcNewDevice(nullptr);
   if (!s.device) throw Error("closest point index: Embree could not create a device");
   s.scene = rtcNewScene(s.device);

@@ -20,15 +20,6 @@ double angle_at(Vec3 p, Vec3 q, Vec3 r) {   // angle at p in degrees
   return std::atan2(norm(cross(u, v)), dot(u, v)) * 180.0 / kPi;
 }
 
-double diagonal_of(const TriangleMesh& m) {
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Vec3& p : m.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  return m.positions.empty() ? 0.0 : distance(lo, hi);
-}
-
 }  // namespace
 
 MeshQuality measure_mesh_quality(const TriangleMesh& mesh) {
@@ -37,7 +28,7 @@ MeshQuality measure_mesh_quality(const TriangleMesh& mesh) {
   q.min_angle = 180;
   std::size_t angles = 0, below = 0, good = 0;
   double sum_min = 0, sum_ar = 0;
-  const double tiny = 1e-24 * std::pow(diagonal_of(mesh), 4);
+  const double tiny = 1e-24 * std::pow(bounding_box(mesh).diagonal(), 4);
   for (const Triangle& t : mesh.triangles) {
     const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const double area2 = norm(cross(b - a, c - a));
@@ -122,7 +113,7 @@ HausdorffDistance hausdorff_distance(const TriangleMesh& a, const TriangleMesh& 
   one_side(b, ia, o, h.b_to_a, sum, count);
   h.two_sided = std::max(h.a_to_b, h.b_to_a);
   h.mean = count ? sum / double(count) : 0.0;
-  h.diagonal = diagonal_of(a);
+  h.diagonal = bounding_box(a).diagonal();
   h.relative = h.diagonal > 0 ? h.two_sided / h.diagonal : 0.0;
   return h;
 }

@@ -22,4 +22,13 @@ struct TriangleMesh {
 // not finite. Repeated indices, zero areas and duplicates are *not* errors (see topology.hpp).
 void validate(const TriangleMesh& mesh);
 
+// The axis-aligned box of all positions (unreferenced vertices included); a zero box at the
+// origin for a mesh without vertices.
+struct BoundingBox {
+  Vec3 min, max;
+  double diagonal() const { return distance(min, max); }
+  Vec3 center() const { return 0.5 * (min + max); }
+};
+BoundingBox bounding_box(const TriangleMesh& mesh);
+
 }  // namespace gsp
