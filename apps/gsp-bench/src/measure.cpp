@@ -74,19 +74,21 @@ double median(std::vector<double> v) {
 
 ErrorStats relative_errors(const std::vector<double>& approx, const std::vector<double>& exact) {
   ErrorStats s;
-  double sum = 0;
+  double sum = 0, signed_sum = 0;
   const std::size_t n = std::min(approx.size(), exact.size());
   for (std::size_t v = 0; v < n; ++v) {
     const double e = exact[v];
     if (!(e > 0) || !std::isfinite(e)) continue;
     double re = 1;
-    if (std::isfinite(approx[v])) re = std::abs(approx[v] - e) / e;
+    double sre = 1;
+    if (std::isfinite(approx[v])) sre = (approx[v] - e) / e, re = std::abs(sre);
     else ++s.unreached;
     sum += re;
+    signed_sum += sre;
     s.max_re = std::max(s.max_re, re);
     ++s.counted;
   }
-  if (s.counted) s.mre = sum / double(s.counted);
+  if (s.counted) s.mre = sum / double(s.counted), s.signed_re = signed_sum / double(s.counted);
   return s;
 }
 

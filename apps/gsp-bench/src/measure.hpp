@@ -38,6 +38,7 @@ double median(std::vector<double> values);   // NaN for an empty list
 struct ErrorStats {
   double mre = 0;               // mean relative error
   double max_re = 0;
+  double signed_re = 0;         // mean of (d - e) / e: negative where the method under-estimates
   std::size_t counted = 0;      // vertices measured
   std::size_t unreached = 0;    // of those, left at +inf by the method
 };

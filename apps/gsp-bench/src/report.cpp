@@ -63,7 +63,7 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
   s.precompute_s = m.ok() ? m.precompute_s : kNaN;
   s.query_s = query_seconds(m);
   std::vector<double> throughput, cycles;
-  double steps = 0, mre = 0, max_re = 0;
+  double steps = 0, mre = 0, max_re = 0, signed_re = 0;
   std::size_t stats_sources = 0;
   for (const SourceRun& r : m.sources) {
     if (!r.seconds.empty()) {
@@ -77,7 +77,7 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
       if (faces > 0) steps += double(r.stats.update_steps) / faces, ++stats_sources;
     }
     if (r.has_errors) {
-      mre += r.errors.mre, max_re = std::max(max_re, r.errors.max_re), ++s.error_sources;
+      mre += r.errors.mre, signed_re += r.errors.signed_re, max_re = std::max(max_re, r.errors.max_re), ++s.error_sources;
       s.unreached += r.errors.unreached;
     }
   }
@@ -86,6 +86,7 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
   s.update_steps_per_triangle = stats_sources ? steps / double(stats_sources) : kNaN;
   s.mre = s.error_sources ? mre / double(s.error_sources) : kNaN;
   s.max_re = s.error_sources ? max_re : kNaN;
+  s.signed_re = s.error_sources ? signed_re / double(s.error_sources) : kNaN;
   s.state_bytes_per_vertex = is_gsp(m.method.id) && m.ok() ? double(m.state_bytes) / nv : kNaN;
   s.solver_bytes_per_vertex = m.ok() && m.solver_bytes >= 0 ? m.solver_bytes / nv : kNaN;
   s.vs_dijkstra = ratio_to(run, Method::dijkstra, s.query_s);
@@ -134,6 +135,7 @@ cli::Json to_json(const Report& report) {
       j["update_steps_per_triangle"] = number_or_null(s.update_steps_per_triangle);
       j["mre"] = number_or_null(s.mre);
       j["max_re"] = number_or_null(s.max_re);
+      j["signed_re"] = number_or_null(s.signed_re);
       j["unreached"] = s.unreached;
       j["state_bytes_per_vertex"] = number_or_null(s.state_bytes_per_vertex);
       j["solver_bytes_per_vertex"] = number_or_null(s.solver_bytes_per_vertex);
@@ -181,6 +183,7 @@ cli::Json to_json(const Report& report) {
         if (r.has_errors) {
           sj["mre"] = r.errors.mre;
           sj["max_re"] = r.errors.max_re;
+          sj["signed_re"] = r.errors.signed_re;
           sj["unreached"] = r.errors.unreached;
         }
         per.push_back(std::move(sj));

@@ -18,6 +18,7 @@ struct Summary {
   double cycles_per_vertex;          // median over sources of median ticks / reached vertices
   double update_steps_per_triangle;  // GSP: mean over sources of update_steps / faces reached
   double mre, max_re;                // mean over sources of the MRE; max over sources
+  double signed_re;                  // mean over sources of the signed mean relative error
   std::size_t unreached;             // vertices left at +inf that exact reaches (all sources)
   double state_bytes_per_vertex;     // GSP: propagation state (GeodesicSolver::state_bytes)
   double solver_bytes_per_vertex;    // measured heap kept by the prepared solver (mallinfo2)
