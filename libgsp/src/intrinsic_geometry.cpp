@@ -109,7 +109,8 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     if (!used[v]) continue;
     const bool flat = boundary[v] ? angle[v] <= kPi * (1 + tol) : std::abs(angle[v] - 2 * kPi) <= 2 * kPi * tol;
     const bool saddle = !boundary[v] && angle[v] > 2 * kPi * (1 + kSaddleExcess);
-    kind[v] = flat ? kFlatVertex : (saddle ? kSaddleVertex : kPlainVertex);
+    const bool convex = !boundary[v] && angle[v] < 2 * kPi;
+    kind[v] = flat ? kFlatVertex : saddle ? kSaddleVertex : convex ? kConvexVertex : kPlainVertex;
   }
   // A vertex joining several fans has no single angle sum.
   for (Index v : nonmanifold_vertices) kind[v] = kPlainVertex;

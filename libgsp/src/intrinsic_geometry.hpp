@@ -21,9 +21,13 @@ namespace gsp::detail {
 //   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
 //   wrong side is shorter than any path on the surface, so the probe is moved towards the
 //   opposite corner there (stricter).
+// - kConvexVertex for the other interior vertices whose angle sum is below 2 pi (positive
+//   curvature). No shortest path turns at such a vertex, and bending a source there is never
+//   shorter than carrying it straight on: the propagation keeps a source straight past one
+//   wherever the probe says "bend" but the centroid is still seen through the edge.
 // The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
 // given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
-inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2;
+inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2, kConvexVertex = 3;
 inline constexpr double kSaddleExcess = 0.01;
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<Index>& ring,
                                        const std::vector<bool>& skipped_face,

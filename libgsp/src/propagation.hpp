@@ -143,12 +143,25 @@ class UpdateStep {
       const Real tq = qx * -sy + sx * qy;
       const Real span = qy - sy;   // >= 0
       kind = tq < 0 ? 1 : (tq > e1 * span ? 2 : 0);
-      // Around a flat vertex every unfolding agrees and no geodesic turns: where the probe's
-      // line passes the vertex closely (crosses AB's line at most kFlatMiss beyond it) the
-      // source goes straight on. Farther out the line could pass vertices that are not flat.
-      if (kind != 0 && t.flat_corner(kind == 1 ? cj : (cj == 2 ? 0 : cj + 1)) &&
-          (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span)
-        kind = 0;
+      if (kind != 0) {
+        const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
+        // Around a flat vertex every unfolding agrees and no geodesic turns: where the probe's
+        // line passes the vertex closely (crosses AB's line at most kFlatMiss beyond it) the
+        // source goes straight on. Farther out the line could pass vertices that are not flat.
+        if (t.flat_corner(end)) {
+          if ((kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span) kind = 0;
+        } else if (t.convex_corner(end)) {
+          // Round a convex vertex (angle sum below 2 pi) the bend S -> vertex -> x is never
+          // shorter than the straight line S -> x, and where the line misses AB the true path
+          // comes round the vertex's other side and is shorter than both; so a bend there only
+          // over-estimates. The source goes on straight wherever the centroid is still seen
+          // through AB (the table's probe nearer the opposite corner is what said "bend").
+          // Unconditionally straight was worse: the line then runs through the cone's gap and
+          // passes saddles farther on at the wrong side (armadillo 0.233 -> 0.443%).
+          const Real tc = cx * -sy + sx * cy;
+          if (tc >= 0 && tc <= e1 * (cy - sy)) kind = 0;
+        }
+      }
       // Round a saddle vertex (angle sum above 2 pi) the unfolded straight line can pass on
       // the wrong side and come out shorter than any surface path; the centroid probe lets
       // such lines through. Where the line passes a saddle end of AB, it is tested again with

@@ -50,9 +50,11 @@ struct Triangulation {
       std::vector<FaceRecord<Real>> r(triangles.size());
       for (std::size_t f = 0; f < triangles.size(); ++f) {
         Index tag = detail::kNoSource;
-        for (Index i = 0; i < 3; ++i)
-          if (kind[triangles[f][i]] == detail::kFlatVertex) tag |= detail::kFlatCorner0 << i;
-          else if (kind[triangles[f][i]] == detail::kSaddleVertex) tag |= detail::kSaddleCorner0 << i;
+        for (Index i = 0; i < 3; ++i) {
+          const std::uint8_t k = kind[triangles[f][i]];
+          if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
+          if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
+        }
         r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
                                  Real(scale * length[3 * f + 2])}, tag};
       }
