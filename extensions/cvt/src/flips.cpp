@@ -1,7 +1,6 @@
 #include "flips.hpp"
 #include "triangle_geometry.hpp"
 
-#include <gsp/closest_point.hpp>
 
 #include <algorithm>
 #include <array>
@@ -76,15 +75,11 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
   return flips;
 }
 
-std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
-                        const std::function<double(Vec3)>& distance_to_surface,
-                        const std::function<Vec3(Vec3)>& nearest) {
+std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg,
+                        const std::function<bool(Index, Index, Index, Index, Index, Index)>& keeps_surface,
+                        const std::function<void()>& flipped) {
   const double cap = cap_angle_deg * 3.14159265358979323846 / 180.0;
   DirectedEdges directed(m);
-  auto pair_distance = [&](Vec3 z, Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3) {   // to (p0,p1,p2) and (p0,p1,p3)
-    const std::array<double, 3> u = closest_point_on_triangle(z, p0, p1, p2), v = closest_point_on_triangle(z, p0, p1, p3);
-    return std::min(distance(z, u[0] * p0 + u[1] * p1 + u[2] * p2), distance(z, v[0] * p0 + v[1] * p1 + v[2] * p3));
-  };
   std::size_t flips = 0;
   for (Index f = 0; f < m.num_faces(); ++f)
     for (Index i = 0; i < 3; ++i) {
@@ -104,12 +99,10 @@ std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg, double bound,
       if (after <= before) continue;
       const Vec3 n = normal(pa, pb, pc) + normal(pb, pa, pd);
       if (dot(normal(pa, pd, pc), n) <= 0 || dot(normal(pd, pb, pc), n) <= 0) continue;
-      const Vec3 old_mid = 0.5 * (pa + pb), new_mid = 0.5 * (pc + pd);
-      if (distance_to_surface(new_mid) > std::max(bound, distance_to_surface(old_mid))) continue;
-      const Vec3 z = nearest(old_mid);
-      if (pair_distance(z, pc, pd, pa, pb) > std::max(bound, pair_distance(z, pa, pb, pc, pd))) continue;
+      if (!keeps_surface(f, g, a, b, c, d)) continue;
       directed.flip(m, f, g, a, b, c, d);
       ++flips;
+      flipped();
       break;
     }
   return flips;

@@ -16,12 +16,13 @@ std::size_t improve_by_flips(TriangleMesh& mesh, double max_normal_angle_deg, in
 // Caps across creases: a triangle with an angle above `cap_angle_deg` (its vertex nearly on
 // the opposite edge) has that edge flipped when the flip raises the smaller of the pair's
 // smallest angles, both new triangles face the way the pair faces on the whole, the new edge
-// does not exist yet, and the surface stays close: `distance(p)` (to the input surface) of the
-// new edge's midpoint is at most max(bound, that of the old edge's midpoint), and the input
-// point nearest the old edge's midpoint (`nearest(p)`) is at most max(bound, before) from the
-// new pair. Unlike improve_by_flips no normal limit: the restricted Delaunay dual of a thin
-// fold makes such caps, and the flip is what removes them. Returns the number of flips.
-std::size_t remove_caps(TriangleMesh& mesh, double cap_angle_deg, double bound,
-                        const std::function<double(Vec3)>& distance, const std::function<Vec3(Vec3)>& nearest);
+// does not exist yet, and `keeps_surface(f, g, a, b, c, d)` agrees: faces f = (a, b, c) and
+// g = (b, a, d) would become (a, d, c) and (d, b, c) (the caller checks that the surface stays
+// close to the input, both ways). `flipped()` is called after each flip. Unlike
+// improve_by_flips no normal limit: the restricted Delaunay dual of a thin fold makes such
+// caps, and the flip is what removes them. Returns the number of flips.
+std::size_t remove_caps(TriangleMesh& mesh, double cap_angle_deg,
+                        const std::function<bool(Index, Index, Index, Index, Index, Index)>& keeps_surface,
+                        const std::function<void()>& flipped);
 
 }  // namespace gsp::cvt::detail
