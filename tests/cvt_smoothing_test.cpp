@@ -73,7 +73,8 @@ TEST(CvtSmoothing, CamelheadRaisesTheMinimumAngle) {
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
   const Measured m = check_smoothing(io::read_mesh(test::shared_mesh("camelhead.off")).mesh, 2000);
   // At 2,000 sites the worst triangles sit in the mouth slit, whose two sheets are closer than
-  // an edge; measured 11.3 -> 13.4, 10.1 -> 18.0 and 10.1 -> 17.7 degrees (the sites moved with the core).
+  // an edge; measured 11.3 -> 13.4, 10.1 -> 18.0 and 10.1 -> 17.7 degrees (the sites moved with the core);
+  // 10.6 -> 19.2 (Hausdorff 0.94% -> 0.79%) since the cap flips check all the input under the pair.
   EXPECT_GT(m.min_angle_after, m.min_angle_before + 1.0);
   EXPECT_GE(m.min_angle_after, 12.0);
 }
@@ -85,10 +86,12 @@ TEST(CvtSmoothing, BunnyHoles) {
 
 TEST(CvtSmoothing, FalconThinFoldsLoseTheirCaps) {
   // Closed genus 0 with thin talons: the dual folds over them in caps (angles near 180
-  // degrees) that only the cap flips remove.
+  // degrees) that the cap flips and the moves that turn slivers over remove.
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
   // Measured 2.7 -> 7.7 degrees at 2,000 sites (2.2 -> 19.9 at 10,000, docs/cvt.md); 2.3 -> 5.4
-  // since the core carries sources straight past convex vertices (other sites, other caps).
+  // since the core carries sources straight past convex vertices (other sites, other caps);
+  // 2.48 -> 18.78 since the moves may turn slivers and folded triangles over (a fold along the
+  // base's bottom rim that the cap flips cannot remove: four nearly collinear vertices).
   const Measured m = check_smoothing(io::read_mesh(test::shared_mesh("falconstatue.obj")).mesh, 2000);
   EXPECT_GE(m.min_angle_after, 5.0);
   EXPECT_GT(m.min_angle_after, m.min_angle_before + 3.0);
