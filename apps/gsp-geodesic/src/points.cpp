@@ -45,6 +45,7 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   cs["links"] = s.links;
   cs["normals_from_input"] = s.normals_from_input;
   cs["normals_estimated"] = s.normals_estimated;
+  cs["elliptic_points"] = s.elliptic_points;
   cli::Json& ops = ctx.operations();
   ops["update_steps"] = r.stats.update_steps;
   ops["updates"] = r.stats.updates;

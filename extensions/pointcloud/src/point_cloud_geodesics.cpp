@@ -124,6 +124,7 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
   s.mean_link_length = m.graph.length.empty() ? 0 : total / static_cast<double>(m.graph.length.size());
   s.normals_from_input = m.frames.from_input;
   s.normals_estimated = m.frames.estimated;
+  s.elliptic_points = std::size_t(std::count(m.frames.elliptic.begin(), m.frames.elliptic.end(), std::uint8_t(1)));
 }
 
 PointCloudGeodesics::PointCloudGeodesics(const TriangleMesh& cloud, const PointCloudOptions& options)
@@ -139,6 +140,8 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
   if (std::isnan(options.max_distance)) throw InvalidInput("point cloud: max_distance is NaN");
   if (!(options.visibility_angle_deg >= 0 && options.visibility_angle_deg <= 180))
     throw InvalidInput("point cloud: the visibility angle must lie in [0, 180] degrees");
+  if (!(options.elliptic_visibility_angle_deg >= 0 && options.elliptic_visibility_angle_deg <= 180))
+    throw InvalidInput("point cloud: the elliptic visibility angle must lie in [0, 180] degrees");
   if (!(options.hinge_area >= 0) || std::isnan(options.hinge_area))
     throw InvalidInput("point cloud: hinge_area must be >= 0");
   if (!(options.steep_link_slope >= 0)) throw InvalidInput("point cloud: steep_link_slope must be >= 0");

@@ -55,6 +55,8 @@ class Expander {
            PointPropagationStats& stats)
       : g_(domain.graph), pos_(domain.position), fr_(domain.frames), state_(state), stats_(stats),
         sin_max_(std::sin(std::min(90.0, options.visibility_angle_deg) * 3.14159265358979323846 / 180.0)),
+        sin_elliptic_(std::max(sin_max_, std::sin(std::min(90.0, options.elliptic_visibility_angle_deg) *
+                                                  3.14159265358979323846 / 180.0))),
         max_distance_(options.max_distance),
         mean_link_(domain.mean_link), tau_(options.hinge_area), eps_(1e-12 * (domain.mean_link > 0 ? domain.mean_link : 1.0)),
         slope_(options.steep_link_slope < 1 ? options.steep_link_slope : std::numeric_limits<double>::infinity()),
@@ -146,7 +148,10 @@ class Expander {
             const double h = len * std::abs(b) / r;   // P's distance from the line q -> S
             // The flat unfolding errs by about curvature x area of the hinge triangle
             // (S, p, q) = r h / 2; bound that area (tau len^2 / 2) as well as the angle at q.
-            const double rho = std::min(len * sin_max_, tau_ * len * len / r);
+            // Where the surface is elliptic at both ends the flat unfolding does not cut
+            // corners (positive curvature: geodesics converge), so the window is wider there.
+            const double sin_vis = fr_.elliptic[p] && fr_.elliptic[q] ? sin_elliptic_ : sin_max_;
+            const double rho = std::min(len * sin_vis, tau_ * len * len / r);
             if (h <= rho) {
               straight = true;
               cand_sigma = sig;
@@ -186,7 +191,7 @@ class Expander {
   const TangentFrames& fr_;
   PointState& state_;
   PointPropagationStats& stats_;
-  double sin_max_, max_distance_, mean_link_;
+  double sin_max_, sin_elliptic_, max_distance_, mean_link_;
   double tau_, eps_, slope_, gap_slope_;
   bool curved_;
 };

@@ -1,5 +1,6 @@
 // Normals by local PCA (Eigen's SelfAdjointEigenSolver on the 3x3 covariance of the k nearest
-// points), tangents by a branch-free orthonormal basis.
+// points), tangents by a branch-free orthonormal basis, the curvature sign by a least-squares
+// quadric over the tangent plane.
 #include "tangent_frames.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -40,6 +41,27 @@ void tangents(Vec3 n, Vec3& b1, Vec3& b2) {
   b2 = {b, sign + n.y * n.y * a, -n.y};
 }
 
+// Whether the surface through `self` is elliptic there (Gaussian curvature > 0): the height
+// over the tangent plane fitted as z = a x^2 + b xy + c y^2 + d x + e y (least squares over the
+// neighbours; the linear terms absorb a tilted normal), K ~ 4ac - b^2. Its sign does not
+// depend on the normal's orientation. Fewer than 6 neighbours: not elliptic.
+bool elliptic_at(const std::vector<Vec3>& points, Index self, const Index* idx, std::size_t count, Vec3 n, Vec3 t1,
+                 Vec3 t2) {
+  Eigen::Matrix<double, Eigen::Dynamic, 5> A(count, 5);
+  Eigen::VectorXd z(count);
+  Eigen::Index rows = 0;
+  for (std::size_t a = 0; a < count; ++a) {
+    if (idx[a] == self) continue;
+    const Vec3 d = points[idx[a]] - points[self];
+    const double x = dot(d, t1), y = dot(d, t2);
+    A.row(rows) << x * x, x * y, y * y, x, y;
+    z(rows++) = dot(d, n);
+  }
+  if (rows < 6) return false;
+  const Eigen::Matrix<double, 5, 1> c = A.topRows(rows).colPivHouseholderQr().solve(z.head(rows));
+  return 4 * c(0) * c(2) - c(1) * c(1) > 0;
+}
+
 }  // namespace
 
 TangentFrames tangent_frames(const std::vector<Vec3>& points, const std::vector<Vec3>& input_normals,
@@ -49,6 +71,7 @@ TangentFrames tangent_frames(const std::vector<Vec3>& points, const std::vector<
   f.normal.resize(n);
   f.t1.resize(n);
   f.t2.resize(n);
+  f.elliptic.assign(n, 0);
   const std::size_t want = std::max<std::size_t>(k, 3) + 1;   // the point itself comes back too
   std::vector<Index> idx(want);
   std::vector<double> d2(want);
@@ -59,8 +82,8 @@ TangentFrames tangent_frames(const std::vector<Vec3>& points, const std::vector<
       const double len = norm(given);
       if (is_finite(given) && len > 0) nn = (1.0 / len) * given;
     }
+    const std::size_t got = tree.knn(points[i], want, idx.data(), d2.data());
     if (nn == Vec3{0, 0, 0}) {
-      const std::size_t got = tree.knn(points[i], want, idx.data(), d2.data());
       nn = pca_normal(points, idx.data(), got);
       ++f.estimated;
     } else {
@@ -68,6 +91,7 @@ TangentFrames tangent_frames(const std::vector<Vec3>& points, const std::vector<
     }
     f.normal[i] = nn;
     tangents(nn, f.t1[i], f.t2[i]);
+    f.elliptic[i] = elliptic_at(points, i, idx.data(), got, nn, f.t1[i], f.t2[i]);
   }
   return f;
 }

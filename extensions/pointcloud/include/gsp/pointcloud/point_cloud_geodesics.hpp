@@ -59,6 +59,12 @@ struct PointGeodesicOptions {
   // triangle (S, p, q), which is what the flat unfolding gets wrong on curved (saddle) parts.
   // Smaller values bend more (over-estimate), larger ones cut more (under-estimate).
   double visibility_angle_deg = 10.0;
+  // The angle used instead where both ends of the link are elliptic (Gaussian curvature > 0
+  // by a quadric fitted to each point's neighbours): there the flat unfolding over-estimates
+  // rather than cuts corners (a sphere is exact at any angle), so a wider window only removes
+  // bends. Values at or below visibility_angle_deg turn this off. Measured in
+  // docs/pointcloud.md ("Elliptic points").
+  double elliptic_visibility_angle_deg = 20.0;
   double hinge_area = std::numeric_limits<double>::infinity();   // off by default
   // Links as arcs: a link of chord L whose directions in the two tangent planes turn by
   // theta is unfolded with the length of the circular arc tangent to both planes,
@@ -99,6 +105,7 @@ struct PointCloudStats {
   std::size_t links = 0;                // undirected links of the graph
   std::size_t normals_from_input = 0;   // unique points whose frame uses the file's normal
   std::size_t normals_estimated = 0;    // unique points whose normal came from local PCA
+  std::size_t elliptic_points = 0;      // unique points with positive fitted Gaussian curvature
   double mean_link_length = 0;
   double seconds_tree = 0;              // k-d tree
   double seconds_graph = 0;             // neighbour queries + symmetric CSR
