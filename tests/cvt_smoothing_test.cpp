@@ -23,6 +23,7 @@ using namespace gsp;
 
 struct Measured {
   double min_angle_before, min_angle_after, hausdorff_before, hausdorff_after;
+  std::size_t insertions;
 };
 
 Measured check_smoothing(const TriangleMesh& mesh, std::size_t sites) {
@@ -40,7 +41,9 @@ Measured check_smoothing(const TriangleMesh& mesh, std::size_t sites) {
   EXPECT_EQ(tb.euler_characteristic, ta.euler_characteristic);
   EXPECT_EQ(tb.boundary_loops, ta.boundary_loops);
   EXPECT_EQ(tb.isolated_vertices, 0u);
-  EXPECT_EQ(b.mesh.num_vertices() + b.stats.boundary_collapses, a.mesh.num_vertices() + b.stats.boundary_splits);
+  EXPECT_EQ(b.mesh.num_vertices() + b.stats.boundary_collapses,
+            a.mesh.num_vertices() + b.stats.boundary_splits + b.stats.far_point_insertions);
+  EXPECT_LE(b.stats.far_point_insertions, cvt.sites.size() / 50);
   EXPECT_LE(b.stats.boundary_collapses + b.stats.boundary_splits, sites / 50);
   EXPECT_EQ(b.vertex_site.size(), b.mesh.num_vertices());
 
@@ -62,11 +65,11 @@ Measured check_smoothing(const TriangleMesh& mesh, std::size_t sites) {
   // The moves keep the surface within max(before, 0.2% of the diagonal) locally.
   EXPECT_LE(hb, std::max(ha, 0.002) * 1.05);
   std::printf("[ measured ] min angle %.2f -> %.2f, below 30 %.3f%% -> %.3f%%, Hausdorff %.3f%% -> %.3f%%, "
-              "%zu moves (%zu boundary), %zu collapses, %zu splits, %zu snaps\n",
+              "%zu moves (%zu boundary), %zu collapses, %zu splits, %zu snaps, %zu insertions\n",
               qa.min_angle, qb.min_angle, 100 * qa.below_30, 100 * qb.below_30, 100 * ha, 100 * hb,
               b.stats.smoothing_moves, b.stats.smoothing_boundary_moves, b.stats.boundary_collapses,
-              b.stats.boundary_splits, b.stats.boundary_snaps);
-  return {qa.min_angle, qb.min_angle, ha, hb};
+              b.stats.boundary_splits, b.stats.boundary_snaps, b.stats.far_point_insertions);
+  return {qa.min_angle, qb.min_angle, ha, hb, b.stats.far_point_insertions};
 }
 
 TEST(CvtSmoothing, CamelheadRaisesTheMinimumAngle) {
@@ -92,9 +95,15 @@ TEST(CvtSmoothing, FalconThinFoldsLoseTheirCaps) {
   // since the core carries sources straight past convex vertices (other sites, other caps);
   // 2.48 -> 18.78 since the moves may turn slivers and folded triangles over (a fold along the
   // base's bottom rim that the cap flips cannot remove: four nearly collinear vertices).
+  // Its talon tips (one input vertex each, 0.03 beyond a neck 0.006 wide) are cut by the dual:
+  // the insertions at far input points (RemeshOptions::refine_distance) put vertices on them.
+  // Hausdorff (30,000 samples) 1.166% -> 1.135% without them, -> 1.012% with them (40
+  // insertions, the cap of 2% of the sites; 20.34 degrees).
   const Measured m = check_smoothing(io::read_mesh(test::shared_mesh("falconstatue.obj")).mesh, 2000);
   EXPECT_GE(m.min_angle_after, 5.0);
   EXPECT_GT(m.min_angle_after, m.min_angle_before + 3.0);
+  EXPECT_GT(m.insertions, 0u);
+  EXPECT_LT(m.hausdorff_after, 0.0108);
 }
 
 TEST(CvtSmoothing, FlatSquareKeepsItsBoundary) {

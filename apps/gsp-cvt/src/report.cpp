@@ -93,6 +93,7 @@ void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const Top
   res["boundary_splits"] = remesh.stats.boundary_splits;
   res["boundary_snaps"] = remesh.stats.boundary_snaps;
   res["pulls"] = remesh.stats.pulls;
+  res["far_point_insertions"] = remesh.stats.far_point_insertions;
   ctx.stats()["topology"]["input"] = topology_json(input);
   ctx.stats()["topology"]["output"] = topology_json(output);
 }

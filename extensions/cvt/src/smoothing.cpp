@@ -3,6 +3,7 @@
 
 #include "boundary_curves.hpp"
 #include "flips.hpp"
+#include "point_grid.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/cvt/closest_point_index.hpp>
@@ -20,44 +21,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Points hashed into cubes of side `cell`, for the points within a radius of a query.
-class PointGrid {
- public:
-  PointGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell > 0 ? cell : 1.0) {
-    for (Index i = 0; i < points.size(); ++i) cells_[cell_key(points[i])].push_back(i);
-  }
-  template <class Fn>
-  void near(Vec3 p, double r, Fn&& fn) const {
-    const long long x0 = coord(p.x - r), x1 = coord(p.x + r), y0 = coord(p.y - r), y1 = coord(p.y + r),
-                    z0 = coord(p.z - r), z1 = coord(p.z + r);
-    for (long long x = x0; x <= x1; ++x)
-      for (long long y = y0; y <= y1; ++y)
-        for (long long z = z0; z <= z1; ++z) {
-          const auto it = cells_.find(pack(x, y, z));
-          if (it == cells_.end()) continue;
-          for (Index i : it->second)
-            if (distance(points_[i], p) <= r) fn(i);
-        }
-  }
-
- private:
-  long long coord(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
-  static std::uint64_t pack(long long x, long long y, long long z) {
-    return (std::uint64_t(x & 0x1FFFFF) << 42) | (std::uint64_t(y & 0x1FFFFF) << 21) | std::uint64_t(z & 0x1FFFFF);
-  }
-  std::uint64_t cell_key(Vec3 p) const { return pack(coord(p.x), coord(p.y), coord(p.z)); }
-  const std::vector<Vec3>& points_;
-  double cell_;
-  std::unordered_map<std::uint64_t, std::vector<Index>> cells_;
-};
-
 }  // namespace
 
 SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const TriangleMesh& samples,
                              const BoundaryCurves& curves,
                              const SmoothParams& p) {
   SmoothCounts counts;
-  const ClosestPointIndex index(surface);
+  std::unique_ptr<ClosestPointIndex> own_index;
+  if (!p.surface_index) own_index = std::make_unique<ClosestPointIndex>(surface);
+  const ClosestPointIndex& index = p.surface_index ? *p.surface_index : *own_index;
   double mean_edge = 0;
   for (const Triangle& t : m.triangles) mean_edge += distance(m.positions[t[0]], m.positions[t[1]]);
   mean_edge /= double(std::max<std::size_t>(1, m.num_faces()));
@@ -254,7 +226,8 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
   // A vertex is tried again only when its triangles changed since its last try (a neighbour
   // moved, a flip): the search is deterministic, it would find nothing new.
   std::vector<bool> dirty(V, true);
-  if (p.flip_max_normal_angle >= 0) {
+  if (p.only) dirty = *p.only, dirty.resize(V, false);
+  if (p.flip_max_normal_angle >= 0 && p.cap_flips) {
     // The surface checks of a cap flip, both ways: the new edge's midpoint within
     // max(max_deviation, the old one's distance) of the input, and the input under the old pair
     // within max(max_deviation, before) of the new pair: the point nearest the old edge's

@@ -6,6 +6,11 @@
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
+#include <vector>
+
+namespace gsp::cvt {
+class ClosestPointIndex;
+}
 
 namespace gsp::cvt::detail {
 
@@ -17,6 +22,14 @@ struct SmoothParams {
   // Model units; 0: off. After the passes, surface points farther than this from the mesh pull
   // a corner of their nearest triangle part of the way towards them (see smoothing.cpp).
   double pull_distance = 0;
+  // The cap flips first (remove_caps); and which vertices the moves try first (nullptr: all;
+  // others only once their triangles change). The second run after the insertions of
+  // refine.hpp tries the new vertices' neighbourhoods only, without caps.
+  bool cap_flips = true;
+  const std::vector<bool>* only = nullptr;
+  // An index over `surface` built by the caller (nullptr: built here; the working mesh's takes
+  // a few tenths of a second).
+  const ClosestPointIndex* surface_index = nullptr;
 };
 
 struct SmoothCounts {

@@ -33,8 +33,9 @@ struct RemeshOptions {
   // of their triangles. A move is kept only if it raises that angle, folds nothing, and keeps
   // the triangles within max(smooth_max_deviation * diagonal, before) of the input and the
   // input within the same bound of the triangles. Flips again after every pass; last the
-  // pulls (`pull_distance`). Every vertex stays on the input surface and the topology is
-  // unchanged; the vertex count changes by the collapses and splits (reported).
+  // pulls (`pull_distance`) and the insertions (`refine_distance`). Every vertex stays on the
+  // input surface and the topology is unchanged; the vertex count changes by the collapses,
+  // splits and insertions (reported).
   bool smooth = true;
   int smooth_passes = 8;
   double smooth_below_angle = 40.0;
@@ -47,6 +48,16 @@ struct RemeshOptions {
   // diagonal from the output pull the best corner of their nearest triangle onto them, under
   // the same checks with this bound and without lowering the mesh's minimum angle. 0: off.
   double pull_distance = 3e-3;
+  // Then points of the input still farther than this fraction of the diagonal from the output
+  // become vertices, the worst first: the nearest triangle (or interior edge) is split at the
+  // point and the edges around it flipped, if no changed triangle has an angle below
+  // min(the mesh's minimum angle, 30 degrees), folds, or leaves the surface (the checks of the
+  // moves, both ways); then the moves try the new vertices' neighbourhoods. At most
+  // `refine_max_fraction` times the site count. Features narrower than an edge (falconstatue's
+  // talon tips) are cut by the dual, and no move of the vertices around them reaches that far
+  // without ruining their angles. 0: off.
+  double refine_distance = 4e-3;
+  double refine_max_fraction = 0.02;
 };
 
 struct RemeshStats {
@@ -62,11 +73,12 @@ struct RemeshStats {
   std::size_t boundary_splits = 0;      // boundary edges split (one vertex more each)
   std::size_t boundary_snaps = 0;       // boundary vertices moved onto the input's boundary curve
   std::size_t pulls = 0;                // vertices pulled onto input points far from the output
+  std::size_t far_point_insertions = 0; // vertices added at input points far from the output (one more each)
 };
 
 struct RemeshResult {
   TriangleMesh mesh;
-  std::vector<Index> vertex_site;   // output vertex -> index into cvt.sites (kInvalidIndex: a boundary split)
+  std::vector<Index> vertex_site;   // output vertex -> index into cvt.sites (kInvalidIndex: a boundary split or an insertion)
   RemeshStats stats;
 };
 
