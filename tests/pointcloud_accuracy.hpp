@@ -41,19 +41,39 @@ struct Errors {
   double gsp = 0, dijkstra = 0;
 };
 
+// The reference distances from a vertex of the mesh: exact (CGAL) where gsp::reference is
+// built, else mesh GSP.
+class ReferenceField {
+ public:
+  explicit ReferenceField(const TriangleMesh& mesh) : solver_(mesh) {}
+  std::vector<double> operator()(Index v) const {
+#ifdef GSP_HAVE_EXACT_REFERENCE
+    return solver_.distances_from_vertex(v);
+#else
+    return solver_.compute({Source::at_vertex(v)}).vertex_distance;
+#endif
+  }
+
+ private:
+#ifdef GSP_HAVE_EXACT_REFERENCE
+  mutable reference::ExactGeodesicSolver solver_;
+#else
+  GeodesicSolver solver_;
+#endif
+};
+
+// The mesh's vertices as a point cloud (no faces, no normals).
+inline TriangleMesh vertices_only(const TriangleMesh& mesh) {
+  TriangleMesh cloud;
+  cloud.positions = mesh.positions;
+  return cloud;
+}
+
 // MRE averaged over `sources` random vertex sources; the cloud is the mesh's vertices only.
 inline Errors measure(const std::string& path, int sources) {
   const TriangleMesh mesh = io::read_mesh(path).mesh;
-  TriangleMesh cloud;
-  cloud.positions = mesh.positions;
-#ifdef GSP_HAVE_EXACT_REFERENCE
-  reference::ExactGeodesicSolver reference(mesh);
-  auto truth = [&](Index v) { return reference.distances_from_vertex(v); };
-#else
-  const GeodesicSolver reference(mesh);
-  auto truth = [&](Index v) { return reference.compute({Source::at_vertex(v)}).vertex_distance; };
-#endif
-  const PointCloudGeodesics solver(cloud);
+  const ReferenceField truth(mesh);
+  const PointCloudGeodesics solver(vertices_only(mesh));
   PointGeodesicOptions dijkstra;
   dijkstra.method = PointMethod::dijkstra;
   SplitMix rng{77};
