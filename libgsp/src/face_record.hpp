@@ -30,9 +30,11 @@ struct FaceRecord {
 
   Index source() const { return tag & kSourceMask; }
   bool reached() const { return source() != kNoSource; }
-  bool flat_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == (kFlatCorner0 << i); }
-  bool saddle_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == (kSaddleCorner0 << i); }
-  bool convex_corner(Index i) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == ((kFlatCorner0 | kSaddleCorner0) << i); }
+  // Corner i's two bits, compared in place (one mask and one compare per test).
+  bool corner_bits(Index i, Index bits) const { return (tag & ((kFlatCorner0 | kSaddleCorner0) << i)) == (bits << i); }
+  bool flat_corner(Index i) const { return corner_bits(i, kFlatCorner0); }
+  bool saddle_corner(Index i) const { return corner_bits(i, kSaddleCorner0); }
+  bool convex_corner(Index i) const { return corner_bits(i, kFlatCorner0 | kSaddleCorner0); }
 };
 
 // The face seen from its halfedge j: A = corner j at the origin, B = corner j+1 at (e1, 0),

@@ -143,6 +143,13 @@ class UpdateStep {
       const Real tq = qx * -sy + sx * qy;
       const Real span = qy - sy;   // >= 0
       kind = tq < 0 ? 1 : (tq > e1 * span ? 2 : 0);
+      // Where the segment from the probe at lambda (between P and the centroid) to S crosses
+      // AB's line: 0 within AB, 1 before A, 2 beyond B (the same test as above).
+      auto crossing = [&](Real lambda) {
+        const Real rx = v.px + lambda * (cx - v.px), ry = v.py + lambda * (cy - v.py);
+        const Real tr = rx * -sy + sx * ry;
+        return tr < 0 ? 1 : (tr > e1 * (ry - sy) ? 2 : 0);
+      };
       if (kind != 0) {
         const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
         // Around a flat vertex every unfolding agrees and no geodesic turns: where the probe's
@@ -158,17 +165,14 @@ class UpdateStep {
           // through AB (the table's probe nearer the opposite corner is what said "bend").
           // Unconditionally straight was worse: the line then runs through the cone's gap and
           // passes saddles farther on at the wrong side (armadillo 0.233 -> 0.443%).
-          const Real tc = cx * -sy + sx * cy;
-          if (tc >= 0 && tc <= e1 * (cy - sy)) kind = 0;
+          if (crossing(Real(1)) == 0) kind = 0;
         } else if (t.saddle_corner(end)) {
           // At a saddle a bend is right for the hidden part of the face and over-estimates the
           // rest. The table probes needles and slivers almost at the opposite corner (entries
           // 10, 11, 14: lambda about 0.05), so it bends where nearly all of the face sees the
           // source; the CAD parts, whose concave corners are saddles, over-estimated by
           // +0.8%. A probe at kSaddleLooseLambda has the last word there.
-          const Real rx = v.px + kSaddleLooseLambda * (cx - v.px), ry = v.py + kSaddleLooseLambda * (cy - v.py);
-          const Real tr = rx * -sy + sx * ry;
-          if (tr >= 0 && tr <= e1 * (ry - sy)) kind = 0;
+          if (crossing(kSaddleLooseLambda) == 0) kind = 0;
         }
       }
       // Round a saddle vertex (angle sum above 2 pi) the unfolded straight line can pass on
@@ -176,9 +180,7 @@ class UpdateStep {
       // such lines through. Where the line passes a saddle end of AB, it is tested again with
       // a probe nearer the opposite corner (kSaddleLambda), and bends there if that fails.
       if (kind == 0 && e1 > 0 && (t.saddle_corner(cj) || t.saddle_corner(cj == 2 ? 0 : cj + 1))) {
-        const Real rx = v.px + kSaddleLambda * (cx - v.px), ry = v.py + kSaddleLambda * (cy - v.py);
-        const Real tr = rx * -sy + sx * ry;
-        const int strict = tr < 0 ? 1 : (tr > e1 * (ry - sy) ? 2 : 0);
+        const int strict = crossing(kSaddleLambda);
         if (strict != 0 && t.saddle_corner(strict == 1 ? cj : (cj == 2 ? 0 : cj + 1))) kind = strict;
       }
     } else {
