@@ -4,7 +4,6 @@
 #include "flips.hpp"
 #include "junctions.hpp"
 #include "refine.hpp"
-#include "triangle_geometry.hpp"
 #include "smoothing.hpp"
 
 #include <gsp/cvt/closest_point_index.hpp>
@@ -84,50 +83,17 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     r.stats.smoothing_boundary_moves = c.boundary_moves;
     r.stats.flips += c.flips;
     r.stats.pulls = c.pulls;
-    // Insertions at input points far from the output, then the moves around them (same
-    // surface checks, so they do not give the distance back; no caps, no pulls). An insertion
-    // may first go up to 10 degrees below the floor, which the moves then have to win back: where
-    // they do not, the attempt is undone and made again without those points (twice at most),
-    // the last time without slack.
+    // Insertions at input points far from the output, then the moves around them.
     detail::RefineParams rp;
     rp.bound = options.refine_distance * cvt.diagonal;
     rp.max_inserted = std::size_t(options.refine_max_fraction * double(cvt.sites.size()));
     rp.max_deviation = sp.max_deviation;
     rp.surface_index = &surface_index;
-    std::vector<bool> skip(surface.num_vertices(), false);
-    rp.skip = &skip;
-    const TriangleMesh before = r.mesh;
-    for (int attempt = 0; attempt < 3; ++attempt) {
-      rp.slack_deg = attempt < 2 ? 10.0 : 0.0;
-      const detail::RefineResult added = detail::insert_at_far_points(r.mesh, surface, rp);
-      if (added.inserted == 0) break;
-      detail::SmoothParams again = sp;
-      again.cap_flips = false;
-      again.pull_distance = 0;
-      again.only = &added.touched;
-      const detail::SmoothCounts c2 = detail::smooth_vertices(r.mesh, surface, cvt.working.mesh, curves, again);
-      // New vertices with a triangle below the floor within one ring.
-      const std::size_t first = before.num_vertices();
-      std::vector<bool> bad(r.mesh.num_vertices(), false), near_bad(r.mesh.num_vertices(), false);
-      for (const Triangle& t : r.mesh.triangles)
-        if (detail::min_angle(r.mesh.positions[t[0]], r.mesh.positions[t[1]], r.mesh.positions[t[2]]) < added.floor)
-          for (Index v : t) bad[v] = true;
-      for (const Triangle& t : r.mesh.triangles)
-        if (bad[t[0]] || bad[t[1]] || bad[t[2]])
-          for (Index v : t) near_bad[v] = true;
-      bool failed = false;
-      for (std::size_t i = 0; i < added.points.size(); ++i)
-        if (near_bad[first + i]) skip[added.points[i]] = true, failed = true;
-      if (failed && attempt < 2) {
-        r.mesh = before;
-        continue;
-      }
-      r.stats.far_point_insertions = added.inserted;
-      r.stats.flips += added.flips + c2.flips;
-      r.stats.smoothing_moves += c2.moves;
-      r.stats.smoothing_boundary_moves += c2.boundary_moves;
-      break;
-    }
+    const detail::SettledRefinement added = detail::refine_and_settle(r.mesh, surface, curves, sp, rp);
+    r.stats.far_point_insertions = added.inserted;
+    r.stats.flips += added.flips;
+    r.stats.smoothing_moves += added.moves;
+    r.stats.smoothing_boundary_moves += added.boundary_moves;
     r.vertex_site.resize(r.mesh.num_vertices(), kInvalidIndex);
     if (r.stats.boundary_collapses) drop_unused_vertices(r);
   }

@@ -364,4 +364,44 @@ RefineResult insert_at_far_points(TriangleMesh& m, const TriangleMesh& surface, 
   return result;
 }
 
+SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surface, const BoundaryCurves& curves,
+                                    const SmoothParams& smooth, RefineParams params) {
+  SettledRefinement out;
+  std::vector<bool> skip(surface.num_vertices(), false);
+  params.skip = &skip;
+  const TriangleMesh before = mesh;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    params.slack_deg = attempt < 2 ? 10.0 : 0.0;
+    const RefineResult added = insert_at_far_points(mesh, surface, params);
+    if (added.inserted == 0) break;
+    SmoothParams again = smooth;
+    again.cap_flips = false;
+    again.pull_distance = 0;
+    again.only = &added.touched;
+    const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, again);
+    // New vertices with a triangle below the floor within one ring.
+    const std::size_t first = before.num_vertices();
+    std::vector<bool> bad(mesh.num_vertices(), false), near_bad(mesh.num_vertices(), false);
+    for (const Triangle& t : mesh.triangles)
+      if (min_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]) < added.floor)
+        for (Index v : t) bad[v] = true;
+    for (const Triangle& t : mesh.triangles)
+      if (bad[t[0]] || bad[t[1]] || bad[t[2]])
+        for (Index v : t) near_bad[v] = true;
+    bool failed = false;
+    for (std::size_t i = 0; i < added.points.size(); ++i)
+      if (near_bad[first + i]) skip[added.points[i]] = true, failed = true;
+    if (failed && attempt < 2) {
+      mesh = before;
+      continue;
+    }
+    out.inserted = added.inserted;
+    out.flips = added.flips + c.flips;
+    out.moves = c.moves;
+    out.boundary_moves = c.boundary_moves;
+    break;
+  }
+  return out;
+}
+
 }  // namespace gsp::cvt::detail

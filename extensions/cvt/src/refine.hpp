@@ -3,6 +3,8 @@
 // RemeshOptions::refine_distance): the input-to-output half of the Hausdorff distance comes from
 // features narrower than an edge (talon tips, spikes, sharp ridges) that no site sits on, and
 // moving the vertices around them cannot reach far enough without ruining their angles.
+#include "smoothing.hpp"
+
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
@@ -44,5 +46,17 @@ struct RefineResult {
 // max(bound, before) from the mesh. Manifold, Euler characteristic and boundary are kept
 // (interior splits and flips only).
 RefineResult insert_at_far_points(TriangleMesh& mesh, const TriangleMesh& surface, const RefineParams& params);
+
+struct SettledRefinement {
+  std::size_t inserted = 0, flips = 0, moves = 0, boundary_moves = 0;
+};
+
+// insert_at_far_points with 10 degrees of slack, then the vertex moves around the new vertices
+// (`smooth` without cap flips or pulls, same surface checks, so they do not give the distance
+// back) to win the slack back. Where a new vertex still has a triangle below the floor within
+// one ring, the mesh is put back and the insertions made again without those points (twice at
+// most), the last time without slack: the floor always holds.
+SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surface, const BoundaryCurves& curves,
+                                    const SmoothParams& smooth, RefineParams params);
 
 }  // namespace gsp::cvt::detail
