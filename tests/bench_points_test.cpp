@@ -28,7 +28,7 @@ TEST(BenchPoints, DomainPointsReportsPointCloudAndDijkstraAgainstExact) {
 
   // CSV: the default methods of --domain points, every one timed and (but exact) with errors.
   const auto rows = parse_csv(gsp::test::slurp(dir / "p.csv"));
-  ASSERT_EQ(rows.size(), 5u);
+  ASSERT_EQ(rows.size(), 6u);
   std::vector<std::string> names;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     names.push_back(rows[i][3]);
@@ -37,7 +37,7 @@ TEST(BenchPoints, DomainPointsReportsPointCloudAndDijkstraAgainstExact) {
     EXPECT_GT(std::stod(rows[i][8]), 0.0) << rows[i][3];   // query_s
     EXPECT_GT(std::stod(rows[i][12]), 0.0) << rows[i][3];  // mre
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"points-gsp", "points-dijkstra", "gsp", "exact"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"points-gsp", "points-graph-gsp", "points-dijkstra", "gsp", "exact"}));
 
   const JsonValue report = parse_json(gsp::test::slurp(dir / "p.json"));
   EXPECT_EQ(report["settings"]["domain"].str, "points");

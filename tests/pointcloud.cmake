@@ -16,3 +16,4 @@ gsp_test(pointcloud_soup_test SOURCES pointcloud_soup_test.cpp DEPS gsp::core gs
 gsp_test(pointcloud_soup_orientation_test SOURCES pointcloud_soup_orientation_test.cpp DEPS gsp::core gsp::io)
 target_include_directories(pointcloud_soup_orientation_test PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)
 gsp_test(pointcloud_rules_test SOURCES pointcloud_rules_test.cpp DEPS gsp::pointcloud)
+gsp_test(pointcloud_triangles_test SOURCES pointcloud_triangles_test.cpp DEPS gsp::pointcloud)

@@ -70,23 +70,24 @@ inline TriangleMesh vertices_only(const TriangleMesh& mesh) {
 }
 
 // MRE averaged over `sources` random vertex sources; the cloud is the mesh's vertices only.
-inline Errors measure(const std::string& path, int sources) {
+inline Errors measure(const std::string& path, int sources, PointMethod method = PointMethod::gsp) {
   const TriangleMesh mesh = io::read_mesh(path).mesh;
   const ReferenceField truth(mesh);
   const PointCloudGeodesics solver(vertices_only(mesh));
-  PointGeodesicOptions dijkstra;
+  PointGeodesicOptions gsp, dijkstra;
+  gsp.method = method;
   dijkstra.method = PointMethod::dijkstra;
   SplitMix rng{77};
   Errors e;
   for (int s = 0; s < sources; ++s) {
     const Index v = Index(rng.next() % mesh.num_vertices());
     const std::vector<double> ex = truth(v);
-    e.gsp += mre(solver.compute({PointSource::at_point(v)}).distance, ex) / sources;
+    e.gsp += mre(solver.compute({PointSource::at_point(v)}, gsp).distance, ex) / sources;
     e.dijkstra += mre(solver.compute({PointSource::at_point(v)}, dijkstra).distance, ex) / sources;
   }
-  std::printf("%-28s points %zu  MRE  point GSP %.3f%%  Dijkstra (same k-NN graph) %.3f%%\n",
-              std::filesystem::path(path).filename().c_str(), mesh.num_vertices(), 100 * e.gsp,
-              100 * e.dijkstra);
+  std::printf("%-28s points %zu  MRE  point GSP (%s) %.3f%%  Dijkstra (same k-NN graph) %.3f%%\n",
+              std::filesystem::path(path).filename().c_str(), mesh.num_vertices(),
+              method == PointMethod::gsp ? "triangles" : "links", 100 * e.gsp, 100 * e.dijkstra);
   return e;
 }
 

@@ -55,17 +55,23 @@ TEST(PointCloudGeodesics, PlaneGivesEuclideanDistances) {
   EXPECT_EQ(solver.stats().components, 1u);
   EXPECT_EQ(solver.stats().normals_estimated, pts.size());
   const Index s = 30 * 60 + 30;
+  PointGeodesicOptions graph, dijkstra;
+  graph.method = PointMethod::graph_gsp;
+  dijkstra.method = PointMethod::dijkstra;
   const auto r = solver.compute({PointSource::at_point(s)});
   EXPECT_EQ(r.distance[s], 0.0);
   const Rel gsp = relative_error(r.distance, pts, pts[s]);
-  PointGeodesicOptions dijkstra;
-  dijkstra.method = PointMethod::dijkstra;
+  const Rel links = relative_error(solver.compute({PointSource::at_point(s)}, graph).distance, pts, pts[s]);
   const Rel dij = relative_error(solver.compute({PointSource::at_point(s)}, dijkstra).distance, pts, pts[s]);
-  std::printf("plane: MRE point GSP %.4f%% (max %.3f%%), Dijkstra %.3f%% (max %.2f%%)\n", 100 * gsp.mean,
-              100 * gsp.max, 100 * dij.mean, 100 * dij.max);
-  EXPECT_LT(gsp.mean, 0.005);
-  EXPECT_LT(gsp.max, 0.05);
-  EXPECT_LT(gsp.mean, dij.mean / 4);
+  std::printf("plane: MRE point GSP %.2e%% (max %.2e%%), over the links %.4f%% (max %.3f%%), Dijkstra %.3f%% (max %.2f%%)\n",
+              100 * gsp.mean, 100 * gsp.max, 100 * links.mean, 100 * links.max, 100 * dij.mean, 100 * dij.max);
+  // The local triangles tile the plane (no hole: every point of a triangle reached through
+  // triangles) and the core is exact on planar triangulations, up to single precision.
+  EXPECT_LT(gsp.max, 1e-5);
+  EXPECT_EQ(r.stats.points_reached_over_links, 0u);
+  EXPECT_LT(links.mean, 0.005);
+  EXPECT_LT(links.max, 0.05);
+  EXPECT_LT(links.mean, dij.mean / 4);
 }
 
 TEST(PointCloudGeodesics, PositionSourceSeedsItsNeighbours) {
@@ -73,15 +79,30 @@ TEST(PointCloudGeodesics, PositionSourceSeedsItsNeighbours) {
   const PointCloudGeodesics solver(pts);
   const Vec3 x{19.37, 20.21, 0};
   PointGeodesicOptions o;
-  const auto r = solver.compute({PointSource::at_position(x, 0.5)}, o);
-  double mre = 0;   // the offset 0.5 comes on top of the Euclidean distance
-  for (std::size_t i = 0; i < pts.size(); ++i) mre += std::abs(r.distance[i] - 0.5 - distance(pts[i], x)) / distance(pts[i], x) / pts.size();
-  EXPECT_LT(mre, 0.01);
   const Index near = solver.nearest_point(x);
-  EXPECT_NEAR(r.distance[near], 0.5 + distance(pts[near], x), 1e-9);   // seeded exactly
-  o.seeding = PositionSeeding::snap;
-  const auto snapped = solver.compute({PointSource::at_position(x)}, o);
-  EXPECT_EQ(snapped.distance[solver.nearest_point(x)], 0.0);
+  for (PointMethod m : {PointMethod::gsp, PointMethod::graph_gsp}) {
+    o.method = m;
+    o.seeding = PositionSeeding::neighbours;
+    const auto r = solver.compute({PointSource::at_position(x, 0.5)}, o);
+    double mre = 0, max = 0;   // the offset 0.5 comes on top of the Euclidean distance
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double e = std::abs(r.distance[i] - 0.5 - distance(pts[i], x)) / distance(pts[i], x);
+      mre += e / double(pts.size());
+      max = std::max(max, e);
+    }
+    if (m == PointMethod::gsp) {
+      // The position becomes a source at the closest point of the local triangles: on a plane
+      // that is the position itself, and every distance is Euclidean (single precision).
+      EXPECT_LT(max, 1e-5);
+      EXPECT_NEAR(r.distance[near], 0.5 + distance(pts[near], x), 1e-6);
+    } else {
+      EXPECT_LT(mre, 0.01);
+      EXPECT_NEAR(r.distance[near], 0.5 + distance(pts[near], x), 1e-9);   // seeded exactly
+    }
+    o.seeding = PositionSeeding::snap;
+    const auto snapped = solver.compute({PointSource::at_position(x)}, o);
+    EXPECT_EQ(snapped.distance[near], 0.0);
+  }
 }
 
 TEST(PointCloudGeodesics, TwoSourcesGiveVoronoiLabels) {
@@ -122,10 +143,14 @@ TEST(PointCloudGeodesics, DuplicatesOutliersAndComponents) {
   EXPECT_EQ(st.duplicates, 55u);
   EXPECT_EQ(st.unique_points, pts.size() - 55);
   EXPECT_EQ(st.components, 2u);
-  for (PointMethod m : {PointMethod::gsp, PointMethod::dijkstra}) {
+  // The outlier and the points of the far cluster's edge have no triangle of their own.
+  EXPECT_GE(st.points_without_triangle, 1u);
+  EXPECT_EQ(st.triangle_components, 2u);
+  for (PointMethod m : {PointMethod::gsp, PointMethod::graph_gsp, PointMethod::dijkstra}) {
     PointGeodesicOptions o;
     o.method = m;
     const auto r = solver.compute({PointSource::at_point(plane + 3)}, o);   // a duplicate of point 21
+    if (m == PointMethod::gsp) EXPECT_GE(r.stats.points_reached_over_links, 1u);   // the outlier
     for (std::size_t i = 0; i < pts.size(); ++i) {
       ASSERT_FALSE(std::isnan(r.distance[i])) << i;
       if (i < plane + 56) {
@@ -205,9 +230,24 @@ TEST(PointCloudShared, B9WithLargeCoordinateOffsets) {
               solver.stats().points, solver.stats().duplicates, solver.stats().components,
               solver.stats().largest_component, solver.stats().mean_link_length);
   expect_component_reached(solver, 0);
-  // Neighbouring points: the distance is at most the link (no precision lost to the offsets);
-  // with chords as links, since arcs are longer by design (docs/pointcloud.md).
+  // On the local triangles: a point of a triangle around point 0 is no farther than the
+  // triangle's edge (a straight path on the surface), up to the core's single precision.
+  const auto on_triangles = solver.compute({PointSource::at_point(0)});
+  std::size_t edges = 0;
+  for (const Triangle& t : solver.local_triangles())
+    for (int c = 0; c < 3; ++c)
+      if (t[c] == 0) {
+        for (int o = 1; o < 3; ++o) {
+          const Index q = t[(c + o) % 3];
+          EXPECT_LE(on_triangles.distance[q], distance(cloud.positions[0], cloud.positions[q]) * (1 + 1e-6)) << q;
+          ++edges;
+        }
+      }
+  EXPECT_GT(edges, 0u);
+  // Neighbouring points over the links: the distance is at most the link (no precision lost to
+  // the offsets); with chords as links, since arcs are longer by design (docs/pointcloud.md).
   PointGeodesicOptions chords;
+  chords.method = PointMethod::graph_gsp;
   chords.curved_links = false;
   const auto r = solver.compute({PointSource::at_point(0)}, chords);
   const auto& g = solver.graph();

@@ -1,6 +1,7 @@
-// The propagation rules that made point-cloud GSP beat Dijkstra threefold (docs/pointcloud.md):
-// links unfolded with their arc length (chords cut below a curved surface), and steep and gap
-// links (across thin gaps) left out unless nothing else reaches a point.
+// The graph propagation's rules (PointMethod::graph_gsp, docs/pointcloud.md): links unfolded
+// with their arc length (chords cut below a curved surface), and steep and gap links (across
+// thin gaps) left out unless nothing else reaches a point; and the same gaps on the local
+// triangles (PointMethod::gsp), whose one-rings leave steep links out.
 #include "helpers/geodesic_fixtures.hpp"
 
 #include <gsp/errors.hpp>
@@ -16,7 +17,14 @@ namespace {
 
 using pointcloud::PointCloudGeodesics;
 using pointcloud::PointGeodesicOptions;
+using pointcloud::PointMethod;
 using pointcloud::PointSource;
+
+PointGeodesicOptions over_links() {
+  PointGeodesicOptions o;
+  o.method = PointMethod::graph_gsp;
+  return o;
+}
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -54,10 +62,11 @@ TEST(PointCloudRules, ArcLengthLinksRemoveTheChordsBias) {
   const auto pts = cylinder(24, 40);   // 15 degrees per link around: chords 0.29% short
   const PointCloudGeodesics solver(pts);
   const Index s = 20 * 24;
-  PointGeodesicOptions chords;
+  PointGeodesicOptions chords = over_links();
   chords.curved_links = false;
   const auto [chord_signed, chord_mre] = cylinder_errors(solver.compute({PointSource::at_point(s)}, chords).distance, pts, s);
-  const auto [arc_signed, arc_mre] = cylinder_errors(solver.compute({PointSource::at_point(s)}).distance, pts, s);
+  const auto [arc_signed, arc_mre] =
+      cylinder_errors(solver.compute({PointSource::at_point(s)}, over_links()).distance, pts, s);
   std::printf("cylinder, 24 x 40 points: chords signed %+.4f%% (MRE %.4f%%), arcs signed %+.4f%% (MRE %.4f%%)\n",
               100 * chord_signed, 100 * chord_mre, 100 * arc_signed, 100 * arc_mre);
   const double deficit = 1 - std::sin(kPi / 24) / (kPi / 24);   // chord / arc for 15 degrees
@@ -93,14 +102,17 @@ TEST(PointCloudRules, SteepLinksDoNotShortcutAcrossAGap) {
   const PointCloudGeodesics solver(m);
   const Index source = Index(15 * 153 + 12);   // (4.8, 6, +0.4)
   const Index below = source + 75;             // (4.8, 6, -0.4)
-  const auto r = solver.compute({PointSource::at_point(source)});
+  const auto r = solver.compute({PointSource::at_point(source)}, over_links());
+  const auto t = solver.compute({PointSource::at_point(source)});
   const double around = 24.8 + kPi * 0.4 + 24.8;
-  std::printf("folded sheet: to the point below %.3f (around the fold %.3f, through the gap 0.8)\n",
-              r.distance[below], around);
+  std::printf("folded sheet: to the point below %.3f over the links, %.3f on the triangles (around the fold %.3f, "
+              "through the gap 0.8)\n", r.distance[below], t.distance[below], around);
   EXPECT_NEAR(r.distance[below], around, 0.02 * around);
   EXPECT_EQ(r.stats.steep_links_used, 0u);
+  EXPECT_NEAR(t.distance[below], around, 0.02 * around);
+  EXPECT_EQ(t.stats.points_reached_over_links, 0u);
   // Every link used: the graph's links across the gap carry the front straight through.
-  PointGeodesicOptions all_links;
+  PointGeodesicOptions all_links = over_links();
   all_links.steep_link_slope = 1;
   all_links.gap_link_slope = 1;
   EXPECT_LT(solver.compute({PointSource::at_point(source)}, all_links).distance[below], 2.0);
@@ -136,8 +148,8 @@ TEST(PointCloudRules, GapLinksDoNotShortcutAcrossANarrowSlit) {
   const Index source = Index(15 * 160 + 69);   // (27.6, 6, +0.12)
   const Index below = source + 75;             // (27.6, 6.2, -0.12)
   const double around = std::hypot(2 + kPi * 0.12 + 2, 0.2);
-  const auto r = solver.compute({PointSource::at_point(source)});
-  PointGeodesicOptions steep_only;
+  const auto r = solver.compute({PointSource::at_point(source)}, over_links());
+  PointGeodesicOptions steep_only = over_links();
   steep_only.gap_link_slope = 1;
   const double without = solver.compute({PointSource::at_point(source)}, steep_only).distance[below];
   std::printf("staggered fold: to the point below %.4f (around the fold %.4f; steep rule only %.4f)\n",
@@ -145,7 +157,7 @@ TEST(PointCloudRules, GapLinksDoNotShortcutAcrossANarrowSlit) {
   EXPECT_NEAR(r.distance[below], around, 0.02 * around);
   EXPECT_EQ(r.stats.steep_links_used, 0u);
   EXPECT_LT(without, 1.0);   // the steep rule alone lets the front through the slit
-  PointGeodesicOptions bad;
+  PointGeodesicOptions bad = over_links();
   bad.gap_link_slope = -0.1;
   EXPECT_THROW(solver.compute({PointSource::at_point(source)}, bad), InvalidInput);
 }
@@ -155,18 +167,32 @@ TEST(PointCloudRules, PointsOnlySteepLinksReachAreStillReached) {
   const PointCloudGeodesics solver(m);
   EXPECT_EQ(solver.stats().components, 1u);
   const Index source = Index(15 * 150 + 12);
-  const auto r = solver.compute({PointSource::at_point(source)});
+  const auto r = solver.compute({PointSource::at_point(source)}, over_links());
   EXPECT_GT(r.stats.steep_links_used, 0u);
   EXPECT_EQ(r.stats.points_reached, m.num_vertices());
-  // Only border points have links across (an interior point's 10 nearest are all on its own
-  // sheet), so the bottom sheet is entered at the border nearest the source: 6 to the border
-  // at y = 0, 0.8 across, 6 back. No point below is nearer than its Euclidean distance.
+  // On the triangles: two sheets, two pieces (no triangle uses a steep link). The lower one is
+  // reached over the links, by shortest paths along them, then the core's propagation runs
+  // from its nearest entry point; here the source's own 10 nearest include the point below
+  // (one of five at 0.8), so that point is 0.8 away, as for Dijkstra on the same links.
+  EXPECT_EQ(solver.stats().triangle_components, 2u);
+  const auto t = solver.compute({PointSource::at_point(source)});
+  PointGeodesicOptions dijkstra;
+  dijkstra.method = PointMethod::dijkstra;
+  const auto d = solver.compute({PointSource::at_point(source)}, dijkstra);
+  EXPECT_EQ(t.stats.points_reached, m.num_vertices());
+  EXPECT_GT(t.stats.points_reached_over_links, 0u);
+  EXPECT_NEAR(t.distance[source + 75], d.distance[source + 75], 1e-6);
+  for (Index q = 0; q < m.num_vertices(); ++q) EXPECT_LE(t.distance[q], d.distance[q] * (1 + 1e-6)) << q;
+  // The graph propagation enters the bottom sheet over the first steep link it finds (in point
+  // order: the border at y = 0): 6 to the border, 0.8 across, 6 back. No point below is nearer
+  // than its Euclidean distance.
   EXPECT_NEAR(r.distance[source + 75], 12.8, 0.02 * 12.8);
   for (Index x = 0; x < 75; ++x) {
     const Index q = Index(15 * 150 + 75 + x);
     EXPECT_GE(r.distance[q], distance(m.positions[q], m.positions[source]) - 1e-9) << x;
+    EXPECT_GE(t.distance[q], distance(m.positions[q], m.positions[source]) * (1 - 1e-6)) << x;
   }
-  PointGeodesicOptions bad;
+  PointGeodesicOptions bad = over_links();
   bad.steep_link_slope = -1;
   EXPECT_THROW(solver.compute({PointSource::at_point(source)}, bad), InvalidInput);
 }

@@ -28,7 +28,8 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::heat, "heat", "CGAL heat method on the input triangles", true},
       {Method::heat_idt, "heat-idt", "CGAL heat method on an intrinsic Delaunay retriangulation", true},
       {Method::exact, "exact", "CGAL exact geodesics (Xin-Wang), the reference", true},
-      {Method::points_gsp, "points-gsp", "point-cloud GSP on the mesh's vertices (k-NN graph, normals by PCA)", false},
+      {Method::points_gsp, "points-gsp", "point-cloud GSP on the mesh's vertices (local triangles of the k-NN graph, normals by PCA)", false},
+      {Method::points_graph_gsp, "points-graph-gsp", "point-cloud GSP over the links of the same k-NN graph (virtual sources in tangent planes)", false},
       {Method::points_dijkstra, "points-dijkstra", "Dijkstra on the same k-NN graph of the mesh's vertices", false},
   };
   return methods;
@@ -55,8 +56,10 @@ const MethodInfo& method_info(Method id) {
 
 bool is_gsp(Method id) { return id <= Method::gsp_input_faces; }
 bool uses_cgal(Method id) { return id == Method::heat || id == Method::heat_idt || id == Method::exact; }
-bool is_points(Method id) { return id == Method::points_gsp || id == Method::points_dijkstra; }
-std::string points_method_list() { return "points-gsp,points-dijkstra,gsp,exact"; }
+bool is_points(Method id) {
+  return id == Method::points_gsp || id == Method::points_graph_gsp || id == Method::points_dijkstra;
+}
+std::string points_method_list() { return "points-gsp,points-graph-gsp,points-dijkstra,gsp,exact"; }
 
 std::vector<MethodInfo> parse_methods(const std::string& list) {
   std::vector<MethodInfo> out;
@@ -157,11 +160,12 @@ class ExactRunner : public Runner {
 };
 
 // The mesh's vertices as a bare point cloud: positions only (a scan without normals), so
-// the tangent frames come from local PCA. The k-d tree, graph and frames are the precompute.
+// the tangent frames come from local PCA. The k-d tree, graph, frames and (points-gsp) the
+// local triangles are the precompute.
 class PointCloudRunner : public Runner {
  public:
   PointCloudRunner(const TriangleMesh& mesh, unsigned neighbours, pointcloud::PointMethod method)
-      : solver_(mesh.positions, {}, cloud_options(neighbours)) {
+      : solver_(mesh.positions, {}, cloud_options(neighbours, method)) {
     options_.method = method;
   }
   Outcome run(Index source) override {
@@ -170,9 +174,10 @@ class PointCloudRunner : public Runner {
   }
 
  private:
-  static pointcloud::PointCloudOptions cloud_options(unsigned neighbours) {
+  static pointcloud::PointCloudOptions cloud_options(unsigned neighbours, pointcloud::PointMethod method) {
     pointcloud::PointCloudOptions o;
     o.neighbours.k = neighbours;
+    o.local_triangles = method == pointcloud::PointMethod::gsp;   // only that method uses them
     return o;
   }
   pointcloud::PointCloudGeodesics solver_;
@@ -204,6 +209,8 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::heat_idt: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::intrinsic_delaunay);
     case Method::exact: return std::make_unique<ExactRunner>(mesh);
     case Method::points_gsp: return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::gsp);
+    case Method::points_graph_gsp:
+      return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::graph_gsp);
     case Method::points_dijkstra:
       return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::dijkstra);
   }

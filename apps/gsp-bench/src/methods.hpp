@@ -28,7 +28,8 @@ enum class Method {
   heat,                // CGAL heat method on the input triangles
   heat_idt,            // CGAL heat method on an intrinsic Delaunay retriangulation
   exact,               // CGAL exact geodesics (the reference)
-  points_gsp,          // point-cloud GSP on the mesh's vertices (gsp::pointcloud, k-NN graph)
+  points_gsp,          // point-cloud GSP on the mesh's vertices (gsp::pointcloud, local triangles)
+  points_graph_gsp,    // point-cloud GSP over the k-NN graph's links (PointMethod::graph_gsp)
   points_dijkstra,     // Dijkstra on the same k-NN graph (the point-cloud baseline)
 };
 

@@ -106,6 +106,7 @@ void run(cli::Context& ctx, const Options& o) {
     run_points(ctx, o, in, max_distance);
     return;
   }
+  if (o.method == "graph-gsp") throw cli::UsageError("--method graph-gsp is for point clouds (--domain points)");
   const ResolvedSources src = resolve_sources(o, in);
   ctx.settings()["method"] = o.method;
   ctx.settings()["sources"] = src.sources.size();

@@ -33,8 +33,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--max-distance", o.max_distance,
                  "stop at this distance (model units); farther vertices are unreached")
       ->type_name("D");
-  app.add_option("--method", o.method, "gsp (default) or dijkstra (edge graph, for comparison)")
-      ->check(CLI::IsMember({"gsp", "dijkstra"}));
+  app.add_option("--method", o.method,
+                 "gsp (default), dijkstra (edge graph, for comparison), or graph-gsp (point clouds: virtual "
+                 "sources over the k-NN links instead of GSP on the local triangles)")
+      ->check(CLI::IsMember({"gsp", "dijkstra", "graph-gsp"}));
   app.add_option("--strategy", o.strategy,
                  "queue strategy: speed-limiter (default), static-postpone, dynamic-postpone, "
                  "hybrid-postpone, bfs, priority-queue");

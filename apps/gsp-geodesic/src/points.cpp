@@ -14,6 +14,7 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   if (o.separate || o.matrix) throw cli::UsageError("--separate and --matrix work on meshes only");
   pointcloud::PointCloudOptions po;
   po.neighbours.k = o.neighbours;
+  po.local_triangles = o.method == "gsp";   // the other methods run on the graph alone
   const pointcloud::PointCloudGeodesics cloud =
       ctx.timer().time("build", [&] { return pointcloud::PointCloudGeodesics(in.mesh, po); });
 
@@ -26,7 +27,9 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   if (sources.empty()) throw cli::UsageError("no source: give --source-vertex or --source-point");
 
   pointcloud::PointGeodesicOptions go;
-  go.method = o.method == "dijkstra" ? pointcloud::PointMethod::dijkstra : pointcloud::PointMethod::gsp;
+  go.method = o.method == "dijkstra"    ? pointcloud::PointMethod::dijkstra
+              : o.method == "graph-gsp" ? pointcloud::PointMethod::graph_gsp
+                                        : pointcloud::PointMethod::gsp;
   go.max_distance = max_distance;
   go.f = o.f;
   const pointcloud::PointCloudResult r = ctx.timer().time("compute", [&] { return cloud.compute(sources, go); });
@@ -46,11 +49,16 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   cs["normals_from_input"] = s.normals_from_input;
   cs["normals_estimated"] = s.normals_estimated;
   cs["elliptic_points"] = s.elliptic_points;
+  cs["local_triangles"] = s.local_triangles;
+  cs["triangle_components"] = s.triangle_components;
+  cs["points_without_triangle"] = s.points_without_triangle;
   cli::Json& ops = ctx.operations();
   ops["update_steps"] = r.stats.update_steps;
   ops["updates"] = r.stats.updates;
   ops["bends"] = r.stats.bends;
   ops["iterations"] = r.stats.iterations;
+  ops["steep_links_used"] = r.stats.steep_links_used;
+  ops["points_reached_over_links"] = r.stats.points_reached_over_links;
   std::size_t reached = 0;
   double far = 0;
   for (double d : r.distance)

@@ -1,13 +1,16 @@
 // PointCloudGeodesics: merge identical points, centre the coordinates (georeferenced clouds
 // carry offsets of 1e5 and more), build the k-d tree, the symmetric neighbour graph and the
-// tangent frames once; compute() seeds the sources and runs GSP or Dijkstra.
+// tangent frames once, and the local triangles; compute() seeds the sources and runs GSP on
+// the triangles, GSP on the graph, or Dijkstra.
 #include <gsp/errors.hpp>
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 
 #include "graph_builder.hpp"
 #include "kd_tree.hpp"
+#include "local_triangles.hpp"
 #include "point_propagation.hpp"
 #include "tangent_frames.hpp"
+#include "triangle_domain.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -35,6 +38,7 @@ struct PointCloudGeodesics::Impl {
   NeighbourGraph graph;
   detail::TangentFrames frames;
   Components components;
+  std::unique_ptr<detail::TriangleDomain> triangles;   // null unless options.local_triangles
   PointCloudStats stats;
 
   void merge_duplicates(const std::vector<Vec3>& points) {
@@ -110,6 +114,13 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
   m.frames = detail::tangent_frames(m.position, unique_normals, *m.tree, options.neighbours.k);
   m.stats.seconds_frames = seconds_since(t0);
 
+  if (options.local_triangles) {
+    t0 = std::chrono::steady_clock::now();
+    const detail::LocalTriangles local = detail::local_triangles(m.position, m.frames, m.graph.begin, m.graph.neighbour);
+    m.triangles = std::make_unique<detail::TriangleDomain>(m.position, detail::consistent_triangles(local));
+    m.stats.seconds_triangles = seconds_since(t0);
+  }
+
   PointCloudStats& s = m.stats;
   s.points = points.size();
   s.unique_points = m.position.size();
@@ -125,6 +136,14 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
   s.normals_from_input = m.frames.from_input;
   s.normals_estimated = m.frames.estimated;
   s.elliptic_points = std::size_t(std::count(m.frames.elliptic.begin(), m.frames.elliptic.end(), std::uint8_t(1)));
+  if (m.triangles) {
+    s.local_triangles = m.triangles->num_triangles();
+    s.triangle_components = m.triangles->num_components();
+    std::vector<std::uint8_t> touched(m.position.size(), 0);
+    for (const Triangle& t : m.triangles->triangles())
+      for (Index v : t) touched[v] = 1;
+    s.points_without_triangle = std::size_t(std::count(touched.begin(), touched.end(), std::uint8_t(0)));
+  }
 }
 
 PointCloudGeodesics::PointCloudGeodesics(const TriangleMesh& cloud, const PointCloudOptions& options)
@@ -146,7 +165,11 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
     throw InvalidInput("point cloud: hinge_area must be >= 0");
   if (!(options.steep_link_slope >= 0)) throw InvalidInput("point cloud: steep_link_slope must be >= 0");
   if (!(options.gap_link_slope >= 0)) throw InvalidInput("point cloud: gap_link_slope must be >= 0");
+  const bool on_triangles = options.method == PointMethod::gsp;
+  if (on_triangles && !m.triangles)
+    throw InvalidInput("point cloud: PointMethod::gsp needs the local triangles (PointCloudOptions::local_triangles)");
   std::vector<detail::Seed> seeds;
+  std::vector<detail::TriangleSource> triangle_sources;
   const unsigned k = std::max(1u, m.options.neighbours.k);
   std::vector<Index> idx(k);
   std::vector<double> d2(k);
@@ -159,14 +182,26 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
         throw InvalidInput("point cloud: source point " + std::to_string(src.point) + " does not exist (" +
                            std::to_string(m.unique_of.size()) + " points)");
       seeds.push_back({m.unique_of[src.point], src.offset, {0, 0, 0}, label});
+      triangle_sources.push_back({Source::at_vertex(m.unique_of[src.point], src.offset), label});
       continue;
     }
     if (!is_finite(src.position)) throw InvalidInput("point cloud: source " + std::to_string(s) + " is not finite");
     if (m.position.empty()) throw InvalidInput("point cloud: a position source needs a non-empty cloud");
     const Vec3 x = src.position - m.origin;
     const std::size_t got = m.tree->knn(x, options.seeding == PositionSeeding::snap ? 1 : k, idx.data(), d2.data());
+    Source on_surface;
+    if (on_triangles && options.seeding == PositionSeeding::neighbours &&
+        m.triangles->closest_point(x, idx.data(), got, on_surface)) {
+      on_surface.offset = src.offset;
+      triangle_sources.push_back({on_surface, label});
+      continue;
+    }
     for (std::size_t a = 0; a < got; ++a) {
       const Index u = idx[a];
+      // Snapped, or no triangle near: the nearest points as sources, each at its straight
+      // distance from the position.
+      const double straight = options.seeding == PositionSeeding::snap ? 0.0 : std::sqrt(d2[a]);
+      triangle_sources.push_back({Source::at_vertex(u, src.offset + straight), label});
       if (options.seeding == PositionSeeding::snap) seeds.push_back({u, src.offset, {0, 0, 0}, label});
       else seeds.push_back({u, src.offset, m.tangent_offset(u, x), label});
     }
@@ -177,7 +212,9 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
   state.reset(m.position.size());
   PointCloudResult r;
   const detail::Domain domain{m.graph, m.position, m.frames, m.stats.mean_link_length};
-  if (options.method == PointMethod::dijkstra)
+  if (on_triangles)
+    m.triangles->propagate(triangle_sources, m.graph, options.max_distance, state, r.stats);
+  else if (options.method == PointMethod::dijkstra)
     detail::propagate_dijkstra(domain, seeds, options.max_distance, state, r.stats);
   else
     detail::propagate_gsp(domain, seeds, options, state, r.stats);
@@ -218,6 +255,15 @@ Index PointCloudGeodesics::nearest_point(Vec3 position) const {
 std::vector<Index> PointCloudGeodesics::component_ids() const {
   std::vector<Index> out(impl_->unique_of.size());
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = impl_->components.id[impl_->unique_of[i]];
+  return out;
+}
+
+std::vector<Triangle> PointCloudGeodesics::local_triangles() const {
+  std::vector<Triangle> out;
+  if (!impl_->triangles) return out;
+  out = impl_->triangles->triangles();
+  for (Triangle& t : out)
+    for (Index& v : t) v = impl_->representative[v];
   return out;
 }
 

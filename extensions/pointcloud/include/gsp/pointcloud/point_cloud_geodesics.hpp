@@ -1,9 +1,11 @@
 #pragma once
 // Geodesic distances on point clouds by Geodesic Source Propagation (paper Section 4.4).
-// Each point carries a virtual source in its tangent plane (2D coordinates + sigma); the
-// sources travel over the k-nearest-neighbour graph, unfolded from one tangent plane into
-// the next, straight where the neighbour lies on the way to the source, bent (a new virtual
-// source at the neighbour) where it does not. docs/pointcloud.md states the rule.
+// The k-nearest-neighbour graph (nanoflann) and per-point tangent frames are built once. By
+// default (PointMethod::gsp) each point's neighbours are triangulated in its tangent plane
+// (local Delaunay one-rings), the triangles its neighbours agree on form a soup, and the mesh
+// core's virtual sources propagate over it. PointMethod::graph_gsp carries a virtual source
+// per point over the graph's links instead, unfolded from one tangent plane into the next.
+// docs/pointcloud.md states both and what each measures.
 //
 //   gsp::pointcloud::PointCloudGeodesics solver(cloud);            // k-d tree, frames, graph
 //   auto r = solver.compute({gsp::pointcloud::PointSource::at_point(0)});
@@ -21,6 +23,9 @@ namespace gsp::pointcloud {
 struct PointCloudOptions {
   NeighbourOptions neighbours;      // k = 10 nearest neighbours by default
   bool use_input_normals = true;    // else (or where a normal is zero/not finite) local PCA
+  // Build the local triangles PointMethod::gsp propagates on (about as long again as the
+  // graph and the frames). Without them only graph_gsp and dijkstra can be computed.
+  bool local_triangles = true;
 };
 
 // A source: an input point, or any position in space (see PositionSeeding). `offset` is an
@@ -42,17 +47,20 @@ enum class PositionSeeding : std::uint8_t {
 };
 
 enum class PointMethod : std::uint8_t {
-  gsp,        // virtual source propagation (the method)
-  dijkstra,   // shortest paths along the same graph's links (the baseline)
+  gsp,         // the mesh core's GSP on the cloud's local triangles (the default)
+  graph_gsp,   // virtual sources in tangent planes carried over the graph's links
+  dijkstra,    // shortest paths along the same graph's links (the baseline)
 };
 
 struct PointGeodesicOptions {
   PointMethod method = PointMethod::gsp;
-  // Speed limiter step (paper 4.2) in mean link lengths of the graph.
+  // graph_gsp: speed limiter step (paper 4.2) in mean link lengths of the graph (gsp uses the
+  // core's default).
   double f = 1.0;
   // Points farther than this are not expanded and are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
-  // Visibility (docs/pointcloud.md): propagation p -> q stays straight while the line from q
+  // The rest are graph_gsp's rules (docs/pointcloud.md, "The graph propagation").
+  // Visibility: propagation p -> q stays straight while the line from q
   // to p's unfolded virtual source S passes within rho of p, with
   //   rho = min(|p - q| sin(visibility_angle), hinge_area |p - q|^2 / |S - q|);
   // beyond, the path bends at that distance from p. The second term bounds the area of the
@@ -88,7 +96,8 @@ struct PointGeodesicOptions {
 };
 
 // Where a point's geodesic comes from: the straight segment (in the point's tangent plane)
-// from the point to `position`, then `sigma` more.
+// from the point to `position`, then `sigma` more. graph_gsp only: gsp and dijkstra report the
+// point itself with sigma = its distance.
 struct PointVirtualSource {
   Vec3 position;                    // 3D, in the point's tangent plane
   double sigma = std::numeric_limits<double>::infinity();
@@ -106,17 +115,22 @@ struct PointCloudStats {
   std::size_t normals_from_input = 0;   // unique points whose frame uses the file's normal
   std::size_t normals_estimated = 0;    // unique points whose normal came from local PCA
   std::size_t elliptic_points = 0;      // unique points with positive fitted Gaussian curvature
+  std::size_t local_triangles = 0;      // triangles PointMethod::gsp propagates on (0 if not built)
+  std::size_t triangle_components = 0;  // edge- or vertex-connected pieces of those triangles
+  std::size_t points_without_triangle = 0;   // unique points no triangle touches (reached over links)
   double mean_link_length = 0;
   double seconds_tree = 0;              // k-d tree
   double seconds_graph = 0;             // neighbour queries + symmetric CSR
   double seconds_frames = 0;            // normals and tangent frames
+  double seconds_triangles = 0;         // local triangles and the core's preparation of them
 };
 
 struct PointPropagationStats {
-  std::uint64_t update_steps = 0;   // candidate evaluations (one per link tried)
-  std::uint64_t updates = 0;        // accepted (a point got a shorter distance)
+  std::uint64_t update_steps = 0;   // candidate evaluations (one per link tried; gsp: per face pair)
+  std::uint64_t updates = 0;        // accepted (a point got a shorter distance; gsp: a face did)
   std::uint64_t bends = 0;          // accepted updates that created a new virtual source
-  std::uint64_t steep_links_used = 0;   // points reached only over steep or gap links (see options)
+  std::uint64_t steep_links_used = 0;   // graph_gsp: points reached only over steep or gap links (see options)
+  std::uint64_t points_reached_over_links = 0;   // gsp: points the triangles did not reach, reached over graph links
   std::uint64_t enqueued = 0;
   std::uint64_t stale_skipped = 0;
   std::uint64_t iterations = 0;     // speed-limiter rounds (heap pops for Dijkstra)
@@ -156,6 +170,10 @@ class PointCloudGeodesics {
   std::vector<Vec3> normals() const;               // per input point, unit, as used (unoriented if estimated)
   const NeighbourGraph& graph() const;             // over the unique points (see unique_index)
   const std::vector<Index>& unique_index() const;  // input point -> graph point
+  // The local triangles PointMethod::gsp propagates on, over input point indices (each unique
+  // point by its first input point); empty when not built. A mesh of the cloud, not a
+  // watertight reconstruction: overlapping and non-manifold where one-rings disagree.
+  std::vector<Triangle> local_triangles() const;
 
  private:
   struct Impl;
