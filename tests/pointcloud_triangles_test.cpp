@@ -123,5 +123,20 @@ TEST(PointCloudTriangles, IndicesAreInputPointsAndDuplicatesShareTheirs) {
   EXPECT_EQ(r.distance[400], 0.0);
 }
 
+TEST(PointCloudTriangles, HubListedByEveryPointStillTriangulates) {
+  // 60 pairs of points 1 from the centre in spiral directions, 0.01 apart: every point's 10
+  // nearest include the centre, whose graph degree is then 120 (its one-ring keeps the nearest
+  // 40 candidates). Every point is reached, over triangles or links.
+  std::vector<Vec3> pts{{0, 0, 0}};
+  for (const Vec3& d : fibonacci_sphere(60)) {
+    pts.push_back(d);
+    pts.push_back(1.01 * d);
+  }
+  const PointCloudGeodesics solver(pts);
+  const auto r = solver.compute({PointSource::at_point(0)});
+  EXPECT_EQ(r.stats.points_reached, pts.size());
+  for (std::size_t i = 1; i < pts.size(); ++i) EXPECT_GE(r.distance[i], norm(pts[i]) * (1 - 1e-6)) << i;
+}
+
 }  // namespace
 }  // namespace gsp::test

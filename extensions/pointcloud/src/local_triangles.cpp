@@ -15,6 +15,8 @@ struct P2 {
 
 // The graph propagation's default PointGeodesicOptions::steep_link_slope.
 constexpr double kSteepSlope = 0.8;
+// One-ring candidates per point at most (k = 10 gives about 10-20 in the symmetric graph).
+constexpr std::size_t kMaxCandidates = 40;
 
 double cross2(P2 a, P2 b) { return a.x * b.y - a.y * b.x; }
 double sq(P2 a) { return a.x * a.x + a.y * a.y; }
@@ -53,6 +55,20 @@ LocalTriangles local_triangles(const std::vector<Vec3>& points, const TangentFra
       uv.push_back(p);
       id.push_back(j);
       scale2 = std::max(scale2, sq(p));
+    }
+    // The test below is cubic in the candidates: a point many others list (a hub next to a
+    // sparse region) keeps its nearest kMaxCandidates only.
+    if (uv.size() > kMaxCandidates) {
+      std::vector<std::size_t> order(uv.size());
+      for (std::size_t a = 0; a < order.size(); ++a) order[a] = a;
+      std::nth_element(order.begin(), order.begin() + kMaxCandidates, order.end(),
+                       [&](std::size_t a, std::size_t b) { return sq(uv[a]) < sq(uv[b]); });
+      order.resize(kMaxCandidates);
+      std::vector<P2> keep_uv;
+      std::vector<Index> keep_id;
+      for (std::size_t a : order) keep_uv.push_back(uv[a]), keep_id.push_back(id[a]);
+      uv.swap(keep_uv);
+      id.swap(keep_id);
     }
     const std::size_t m = uv.size();
     const P2 o{0, 0};
