@@ -9,7 +9,7 @@ if(GSP_WITH_CGAL)
   gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
 endif()
 if(TARGET gsp-geodesic)
-  gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io)
+  gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io gsp::render)
   add_dependencies(geodesic_app_test gsp-geodesic)   # the test runs the binary
 endif()
 gsp_test(geodesic_intrinsic_delaunay_test SOURCES geodesic_intrinsic_delaunay_test.cpp DEPS gsp::core)

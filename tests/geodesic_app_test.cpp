@@ -5,6 +5,7 @@
 
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/render/image.hpp>
 #include <gsp/weld.hpp>
 
 #include <gtest/gtest.h>
@@ -201,6 +202,24 @@ TEST(GeodesicApp, PointCloudDomain) {
     EXPECT_GT(stats["cloud"]["local_triangles"].num, 5210);   // about two per point
     EXPECT_GE(stats["operations"]["points_reached_over_links"].num, 0);
     EXPECT_EQ(io::read_mesh((dir / "k.ply").string()).mesh.num_vertices(), 5210u);
+    // A preview of a cloud is drawn on its local triangles (also with the graph methods).
+    for (const char* method : {"gsp", "dijkstra"}) {
+      const std::filesystem::path png = dir / (std::string(method) + ".png");
+      const auto p = run(app + " " + kitten + " --source-vertex 0 --method " + method + " -o " +
+                             quote((dir / "kp.txt").string()) + " --png " + quote(png.string()) + " --png-size 200",
+                         dir);
+      ASSERT_EQ(p.exit_code, 0) << p.err;
+      const render::Image image = render::read_png(png.string());
+      ASSERT_EQ(image.width, 200);
+      std::size_t drawn = 0;
+      for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+          const auto px = image.pixel(x, y);
+          drawn += !(px[0] == 255 && px[1] == 255 && px[2] == 255);
+        }
+      EXPECT_GT(drawn, 200u * 200u / 10) << method;   // the kitten, not an empty frame
+      EXPECT_LT(drawn, 200u * 200u * 9 / 10) << method;
+    }
     EXPECT_EQ(run(app + " " + kitten + " --source-face 0:0.2,0.2 -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
     EXPECT_EQ(run(app + " " + kitten + " --domain mesh --source-vertex 0 -o " + quote((dir / "x.txt").string()), dir).exit_code, 1);
   }

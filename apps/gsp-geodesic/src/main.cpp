@@ -101,9 +101,8 @@ void run(cli::Context& ctx, const Options& o) {
     return;
   }
   if (o.domain == "points" || (o.domain == "auto" && in.mesh.is_point_cloud())) {
-    if (o.preview.wanted()) throw cli::UsageError("--png draws meshes: not with a point cloud");
     if (metric.wanted()) throw cli::UsageError("--metric needs a mesh: not with a point cloud");
-    run_points(ctx, o, in, max_distance);
+    run_points(ctx, o, in, max_distance, preview);
     return;
   }
   if (o.method == "graph-gsp") throw cli::UsageError("--method graph-gsp is for point clouds (--domain points)");

@@ -9,21 +9,29 @@
 
 namespace gsp::geodesic_app {
 
-void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, double max_distance) {
+void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, double max_distance,
+                const render::RenderOptions& preview) {
   if (!o.source_faces.empty()) throw cli::UsageError("--source-face needs faces: not with --domain points");
   if (o.separate || o.matrix) throw cli::UsageError("--separate and --matrix work on meshes only");
   pointcloud::PointCloudOptions po;
   po.neighbours.k = o.neighbours;
-  po.local_triangles = o.method == "gsp";   // the other methods run on the graph alone
+  // The other methods run on the graph alone; the preview is drawn on the triangles.
+  po.local_triangles = o.method == "gsp" || o.preview.wanted();
   const pointcloud::PointCloudGeodesics cloud =
       ctx.timer().time("build", [&] { return pointcloud::PointCloudGeodesics(in.mesh, po); });
 
   std::vector<pointcloud::PointSource> sources;
+  std::vector<Vec3> marks;   // the sources' positions, for the preview
   for (const std::string& arg : o.source_vertices)
-    for (Index file_point : cli::parse_index_list(arg, "--source-vertex"))
-      sources.push_back(pointcloud::PointSource::at_point(in.mesh_vertex(file_point)));
-  for (const std::string& arg : o.source_points)
+    for (Index file_point : cli::parse_index_list(arg, "--source-vertex")) {
+      const Index point = in.mesh_vertex(file_point);
+      sources.push_back(pointcloud::PointSource::at_point(point));
+      marks.push_back(in.mesh.positions[point]);
+    }
+  for (const std::string& arg : o.source_points) {
     sources.push_back(pointcloud::PointSource::at_position(cli::parse_vec3(arg, "--source-point")));
+    marks.push_back(sources.back().position);
+  }
   if (sources.empty()) throw cli::UsageError("no source: give --source-vertex or --source-point");
 
   pointcloud::PointGeodesicOptions go;
@@ -69,6 +77,13 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   ctx.timer().time("write", [&] {
     write_field(o.output, in, r.distance, r.source, o.labels || sources.size() > 1, o.ascii);
   });
+  if (o.preview.wanted())
+    ctx.timer().time("preview", [&] {
+      TriangleMesh surface;
+      surface.positions = in.mesh.positions;
+      surface.triangles = cloud.local_triangles();
+      render::render_field_preview(o.preview.png, surface, r.distance, marks, preview);
+    });
 }
 
 }  // namespace gsp::geodesic_app
