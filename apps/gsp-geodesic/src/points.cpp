@@ -40,11 +40,13 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
                                         : pointcloud::PointMethod::gsp;
   go.max_distance = max_distance;
   go.f = o.f;
+  go.strategy = parse_strategy(o.strategy);
   const pointcloud::PointCloudResult r = ctx.timer().time("compute", [&] { return cloud.compute(sources, go); });
 
   const pointcloud::PointCloudStats& s = cloud.stats();
   ctx.settings()["domain"] = "points";
   ctx.settings()["method"] = o.method;
+  ctx.settings()["strategy"] = o.strategy;
   ctx.settings()["neighbours"] = o.neighbours;
   ctx.settings()["sources"] = sources.size();
   cli::Json& cs = ctx.stats()["cloud"];

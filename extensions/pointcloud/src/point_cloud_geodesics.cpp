@@ -166,6 +166,9 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
   if (!(options.steep_link_slope >= 0)) throw InvalidInput("point cloud: steep_link_slope must be >= 0");
   if (!(options.gap_link_slope >= 0)) throw InvalidInput("point cloud: gap_link_slope must be >= 0");
   const bool on_triangles = options.method == PointMethod::gsp;
+  if (options.method == PointMethod::graph_gsp && options.strategy != Strategy::speed_limiter)
+    throw InvalidInput("point cloud: graph_gsp runs the speed limiter only (PointMethod::gsp takes every strategy)");
+  if (!(options.f > 0) || !std::isfinite(options.f)) throw InvalidInput("point cloud: f must be positive and finite");
   if (on_triangles && !m.triangles)
     throw InvalidInput("point cloud: PointMethod::gsp needs the local triangles (PointCloudOptions::local_triangles)");
   std::vector<detail::Seed> seeds;
@@ -212,8 +215,15 @@ PointCloudResult PointCloudGeodesics::compute(const std::vector<PointSource>& so
   state.reset(m.position.size());
   PointCloudResult r;
   const detail::Domain domain{m.graph, m.position, m.frames, m.stats.mean_link_length};
-  if (on_triangles)
-    m.triangles->propagate(triangle_sources, m.graph, options.max_distance, state, r.stats);
+  if (on_triangles) {
+    GeodesicOptions core;
+    core.strategy = options.strategy;
+    core.f = options.f;
+    core.max_distance = options.max_distance;
+    core.want_face_distances = false;
+    core.threads = 1;   // compute() may itself run on many threads at once
+    m.triangles->propagate(triangle_sources, m.graph, core, state, r.stats);
+  }
   else if (options.method == PointMethod::dijkstra)
     detail::propagate_dijkstra(domain, seeds, options.max_distance, state, r.stats);
   else

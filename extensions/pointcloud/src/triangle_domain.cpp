@@ -67,17 +67,13 @@ bool TriangleDomain::closest_point(Vec3 x, const Index* near, std::size_t count,
   return std::isfinite(best);
 }
 
-void TriangleDomain::run_core(const std::vector<TriangleSource>& sources, double max_distance, PointState& state,
-                              PointPropagationStats& stats) const {
+void TriangleDomain::run_core(const std::vector<TriangleSource>& sources, const GeodesicOptions& options,
+                              PointState& state, PointPropagationStats& stats) const {
   if (!solver_ || sources.empty()) return;
   std::vector<Source> core;
   core.reserve(sources.size());
   for (const TriangleSource& s : sources) core.push_back(s.source);
-  GeodesicOptions o;
-  o.max_distance = max_distance;
-  o.want_face_distances = false;
-  o.threads = 1;   // PointCloudGeodesics::compute may itself run on many threads
-  const GeodesicResult r = solver_->compute(core, o);
+  const GeodesicResult r = solver_->compute(core, options);
   for (std::size_t v = 0; v < r.vertex_distance.size(); ++v) {
     const double d = r.vertex_distance[v];
     if (!(d < state.distance[v])) continue;
@@ -93,7 +89,8 @@ void TriangleDomain::run_core(const std::vector<TriangleSource>& sources, double
 }
 
 void TriangleDomain::propagate(const std::vector<TriangleSource>& sources, const NeighbourGraph& graph,
-                               double max_distance, PointState& state, PointPropagationStats& stats) const {
+                               const GeodesicOptions& options, PointState& state, PointPropagationStats& stats) const {
+  const double max_distance = options.max_distance;
   // Vertex sources on points without a face: the propagation cannot start from them, the
   // fallback below does (their distance is set here).
   for (const TriangleSource& s : sources) {
@@ -104,7 +101,7 @@ void TriangleDomain::propagate(const std::vector<TriangleSource>& sources, const
       state.label[v] = s.label;
     }
   }
-  run_core(sources, max_distance, state, stats);
+  run_core(sources, options, state, stats);
 
   // Fallback: points the triangles left unreached get Dijkstra distances over the graph's
   // links from every reached point (reached points keep theirs). A soup component entered
@@ -147,7 +144,7 @@ void TriangleDomain::propagate(const std::vector<TriangleSource>& sources, const
   for (Index c = 0; c < component_count_; ++c)
     if (entry[c] != kInvalidIndex)
       entries.push_back({Source::at_vertex(entry[c], state.distance[entry[c]]), state.label[entry[c]]});
-  run_core(entries, max_distance, state, stats);
+  run_core(entries, options, state, stats);
 }
 
 }  // namespace gsp::pointcloud::detail

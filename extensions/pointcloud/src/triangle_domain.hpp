@@ -35,14 +35,15 @@ class TriangleDomain {
   // false when none of them has a face.
   bool closest_point(Vec3 x, const Index* near, std::size_t count, Source& out) const;
 
-  // GSP on the soup, then the fallback over `graph` into points it left unreached. Fills
-  // state.distance / sigma / label per unique point (virtual source at the point itself).
-  void propagate(const std::vector<TriangleSource>& sources, const NeighbourGraph& graph, double max_distance,
-                 PointState& state, PointPropagationStats& stats) const;
+  // GSP on the soup (the core's options: strategy, f, max_distance), then the fallback over
+  // `graph` into points it left unreached. Fills state.distance / sigma / label per unique
+  // point (virtual source at the point itself).
+  void propagate(const std::vector<TriangleSource>& sources, const NeighbourGraph& graph,
+                 const GeodesicOptions& options, PointState& state, PointPropagationStats& stats) const;
 
  private:
   // One GSP query; distances into state where they improve it.
-  void run_core(const std::vector<TriangleSource>& sources, double max_distance, PointState& state,
+  void run_core(const std::vector<TriangleSource>& sources, const GeodesicOptions& options, PointState& state,
                 PointPropagationStats& stats) const;
 
   TriangleMesh mesh_;

@@ -10,6 +10,7 @@
 //   gsp::pointcloud::PointCloudGeodesics solver(cloud);            // k-d tree, frames, graph
 //   auto r = solver.compute({gsp::pointcloud::PointSource::at_point(0)});
 //   r.distance[i]   // per input point, +inf where unreachable (another graph component)
+#include <gsp/geodesics.hpp>
 #include <gsp/mesh.hpp>
 #include <gsp/pointcloud/neighbour_graph.hpp>
 
@@ -54,8 +55,10 @@ enum class PointMethod : std::uint8_t {
 
 struct PointGeodesicOptions {
   PointMethod method = PointMethod::gsp;
-  // graph_gsp: speed limiter step (paper 4.2) in mean link lengths of the graph (gsp uses the
-  // core's default).
+  // gsp: any of the core's queue strategies (paper 4.2), f in mean edge lengths of the
+  // triangles. graph_gsp runs the speed limiter only (other strategies: InvalidInput), f in
+  // mean link lengths of the graph.
+  Strategy strategy = Strategy::speed_limiter;
   double f = 1.0;
   // Points farther than this are not expanded and are reported as +inf.
   double max_distance = std::numeric_limits<double>::infinity();
