@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <thread>
 
 namespace gsp::test {
 namespace {
@@ -122,6 +123,18 @@ TEST(PointCloudTriangles, EveryQueueStrategyOfTheCore) {
   PointGeodesicOptions bad;
   bad.f = 0;
   EXPECT_THROW(solver.compute({PointSource::at_point(3)}, bad), InvalidInput);
+}
+
+TEST(PointCloudTriangles, ConcurrentQueriesMatchSequentialOnes) {
+  const auto pts = fibonacci_sphere(2000);
+  const PointCloudGeodesics solver(pts);
+  std::vector<std::vector<double>> alone(4), together(4);
+  for (Index s = 0; s < 4; ++s) alone[s] = solver.compute({PointSource::at_point(s * 400)}).distance;
+  std::vector<std::thread> threads;
+  for (Index s = 0; s < 4; ++s)
+    threads.emplace_back([&, s] { together[s] = solver.compute({PointSource::at_point(s * 400)}).distance; });
+  for (std::thread& t : threads) t.join();
+  for (Index s = 0; s < 4; ++s) EXPECT_EQ(together[s], alone[s]) << s;   // the same arithmetic
 }
 
 TEST(PointCloudTriangles, BuiltOnlyWhenAsked) {
