@@ -43,8 +43,9 @@ double mre_of(const MeshRun& run, Method id) {
 }
 
 // --domain points: the figures per mesh: the MRE of point-cloud GSP (on the local
-// triangles, and over the graph's links when measured) and of Dijkstra on the same k-NN graph against the mesh's exact geodesics, their ratio, and point-cloud GSP's
-// query time over mesh GSP's.
+// triangles, and over the graph's links when measured) and of Dijkstra on the same k-NN
+// graph against the mesh's exact geodesics, their ratio, and point-cloud GSP's query time
+// over mesh GSP's.
 std::string points_section(const Report& report) {
   bool any = false;
   for (const MeshRun& run : report.runs)

@@ -13,8 +13,6 @@ struct P2 {
   double x, y;
 };
 
-// The graph propagation's default PointGeodesicOptions::steep_link_slope.
-constexpr double kSteepSlope = 0.8;
 // One-ring candidates per point at most (k = 10 gives about 10-20 in the symmetric graph).
 constexpr std::size_t kMaxCandidates = 40;
 
@@ -30,7 +28,8 @@ double incircle(P2 a, P2 b, P2 c, P2 d) {
 }  // namespace
 
 LocalTriangles local_triangles(const std::vector<Vec3>& points, const TangentFrames& frames,
-                               const std::vector<Index>& begin, const std::vector<Index>& neighbours) {
+                               const std::vector<Index>& begin, const std::vector<Index>& neighbours,
+                               double steep_slope) {
   const std::size_t n = points.size();
   std::vector<std::array<Index, 3>> all;
   all.reserve(6 * n);
@@ -49,7 +48,7 @@ LocalTriangles local_triangles(const std::vector<Vec3>& points, const TangentFra
       // links across sharp creases, and the holes it leaves cost more than it saves
       // (docs/pointcloud.md, "Local triangles").
       const double len = norm(d);
-      if (std::max(std::abs(dot(d, frames.normal[i])), std::abs(dot(d, frames.normal[j]))) > kSteepSlope * len) continue;
+      if (std::max(std::abs(dot(d, frames.normal[i])), std::abs(dot(d, frames.normal[j]))) > steep_slope * len) continue;
       const P2 p{dot(d, frames.t1[i]), dot(d, frames.t2[i])};
       if (sq(p) <= 0) continue;   // a duplicate (merged before) or a neighbour along the normal
       uv.push_back(p);

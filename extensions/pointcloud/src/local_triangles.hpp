@@ -20,8 +20,10 @@ struct LocalTriangles {
 };
 
 // neighbours: CSR (begin has points.size() + 1 entries) of each point's candidate neighbours.
+// A neighbour q of p is left out where |n . (q - p)| > steep_slope |q - p| at p or at q.
 LocalTriangles local_triangles(const std::vector<Vec3>& points, const TangentFrames& frames,
-                               const std::vector<Index>& begin, const std::vector<Index>& neighbours);
+                               const std::vector<Index>& begin, const std::vector<Index>& neighbours,
+                               double steep_slope);
 
 // The triangles at least two corners agree on, plus those only one corner has that close an
 // edge the agreed ones leave open (where neighbouring one-rings disagree, e.g. on the diagonal

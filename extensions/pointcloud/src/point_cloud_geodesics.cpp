@@ -116,7 +116,9 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
 
   if (options.local_triangles) {
     t0 = std::chrono::steady_clock::now();
-    const detail::LocalTriangles local = detail::local_triangles(m.position, m.frames, m.graph.begin, m.graph.neighbour);
+    // The one-rings leave out the links graph_gsp treats as steep by default.
+    const detail::LocalTriangles local = detail::local_triangles(m.position, m.frames, m.graph.begin, m.graph.neighbour,
+                                                                 PointGeodesicOptions{}.steep_link_slope);
     m.triangles = std::make_unique<detail::TriangleDomain>(m.position, detail::consistent_triangles(local));
     m.stats.seconds_triangles = seconds_since(t0);
   }
@@ -139,10 +141,7 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
   if (m.triangles) {
     s.local_triangles = m.triangles->num_triangles();
     s.triangle_components = m.triangles->num_components();
-    std::vector<std::uint8_t> touched(m.position.size(), 0);
-    for (const Triangle& t : m.triangles->triangles())
-      for (Index v : t) touched[v] = 1;
-    s.points_without_triangle = std::size_t(std::count(touched.begin(), touched.end(), std::uint8_t(0)));
+    s.points_without_triangle = m.triangles->num_points_without_face();
   }
 }
 

@@ -43,7 +43,10 @@ TriangleDomain::TriangleDomain(const std::vector<Vec3>& position, std::vector<Tr
   component_.assign(n, kInvalidIndex);
   std::vector<Index> id_of_root(n, kInvalidIndex);
   for (Index v = 0; v < n; ++v) {
-    if (face_begin_[v] == face_begin_[v + 1]) continue;
+    if (face_begin_[v] == face_begin_[v + 1]) {
+      ++without_face_;
+      continue;
+    }
     Index& id = id_of_root[find(parent, v)];
     if (id == kInvalidIndex) id = static_cast<Index>(component_count_++);
     component_[v] = id;

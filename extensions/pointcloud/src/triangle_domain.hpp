@@ -30,6 +30,7 @@ class TriangleDomain {
   std::size_t num_triangles() const { return mesh_.triangles.size(); }
   const std::vector<Triangle>& triangles() const { return mesh_.triangles; }
   std::size_t num_components() const { return component_count_; }   // of the soup, over points with a face
+  std::size_t num_points_without_face() const { return without_face_; }
 
   // The closest surface point to x over the faces around the given points (its nearest points);
   // false when none of them has a face.
@@ -51,6 +52,7 @@ class TriangleDomain {
   std::vector<Index> face_begin_, faces_;   // CSR: the faces around each point
   std::vector<Index> component_;            // per point: soup component, kInvalidIndex without faces
   std::size_t component_count_ = 0;
+  std::size_t without_face_ = 0;
 };
 
 }  // namespace gsp::pointcloud::detail
