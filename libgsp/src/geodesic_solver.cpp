@@ -1,6 +1,7 @@
 #include "intrinsic_delaunay.hpp"
 #include "query_steps.hpp"
 #include "solver_impl.hpp"
+#include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
 #include <gsp/connectivity.hpp>
@@ -26,21 +27,6 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
     const Triangle& t = mesh.triangles[f];
     skipped_face[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
   }
-  // Every halfedge starts as a ring of its own (boundary, skipped face, loop), then the
-  // members of each radial ring are linked without the skipped faces' halfedges.
-  std::vector<Index> plain(nh);
-  for (Index h = 0; h < nh; ++h) plain[h] = h;
-  std::vector<Index> members;
-  for (Index e = 0; e < conn.num_edges(); ++e) {
-    members.clear();
-    const Index first = conn.edge_halfedge[e];
-    Index h = first;
-    do {
-      if (!skipped_face[face_of(h)]) members.push_back(h);
-      h = conn.radial_next[h];
-    } while (h != first);
-    for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
-  }
   input.triangles = mesh.triangles;
   if (edge_lengths.empty()) {
     input.length = detail::halfedge_lengths(mesh);
@@ -50,6 +36,25 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
     for (std::size_t f = 0; f < mesh.num_faces(); ++f)
       for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(layout.face_order[f]) + i];
   }
+  detail::snap_zero_lengths(input.length);
+  // Every halfedge starts as a ring of its own (boundary, skipped face, loop, zero-length
+  // edge), then the members of each radial ring are linked without the skipped faces'
+  // halfedges.
+  std::vector<Index> plain(nh);
+  for (Index h = 0; h < nh; ++h) plain[h] = h;
+  std::vector<Index> members;
+  for (Index e = 0; e < conn.num_edges(); ++e) {
+    members.clear();
+    const Index first = conn.edge_halfedge[e];
+    if (detail::zero_length_edge(input.length, first)) continue;
+    Index h = first;
+    do {
+      if (!skipped_face[face_of(h)]) members.push_back(h);
+      h = conn.radial_next[h];
+    } while (h != first);
+    for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
+  }
+  input.needs_double = detail::needs_double_lengths(input.length, skipped_face);
   input.set_direction_bits(plain);
   input.corner_begin = conn.vertex_corner_begin;
   input.corners = conn.vertex_corners;
@@ -70,8 +75,39 @@ void GeodesicSolver::Impl::build_delaunay() {
   delaunay = std::make_unique<Triangulation>();
   delaunay->triangles = std::move(t.triangles);
   delaunay->length = std::move(t.length);
+  detail::snap_zero_lengths(delaunay->length);
+  delaunay->needs_double = detail::needs_double_lengths(delaunay->length, skipped_face);
   delaunay->set_direction_bits(t.ring);
   delaunay->build_corners(mesh.num_vertices());
+}
+
+void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
+  // Union the ends of every zero-length edge of a face that takes part.
+  std::vector<Index> parent;   // over the vertices met, by a map to local ids
+  std::vector<Index> local(mesh.num_vertices(), kInvalidIndex), vertex;
+  auto id = [&](Index v) {
+    if (local[v] == kInvalidIndex) local[v] = Index(vertex.size()), vertex.push_back(v), parent.push_back(local[v]);
+    return local[v];
+  };
+  auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (Index e = 0; e < conn.num_edges(); ++e) {
+    const Index h = conn.edge_halfedge[e];
+    if (skipped_face[face_of(h)] || !detail::zero_length_edge(input.length, h)) continue;
+    const Index a = id(from_vertex(mesh, h)), b = id(to_vertex(mesh, h));
+    const Index ra = find(a), rb = find(b);
+    if (ra != rb) parent[ra] = rb;
+  }
+  if (vertex.empty()) return;
+  std::vector<std::vector<Index>> groups(vertex.size());
+  for (Index i = 0; i < Index(vertex.size()); ++i) groups[find(i)].push_back(vertex[i]);
+  for (const auto& g : groups) {
+    if (g.size() < 2) continue;
+    coincident.insert(coincident.end(), g.begin(), g.end());
+    coincident_begin.push_back(Index(coincident.size()));
+  }
 }
 
 void GeodesicSolver::Impl::find_bridge_vertices() {
@@ -124,7 +160,10 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
   m.build_input(conn, options.edge_lengths);
   m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
   m.find_bridge_vertices();
-  std::vector<Index> nonmanifold = m.bridge_vertices;   // plus the ends of edges with > 2 faces
+  m.find_coincident_vertices(conn);
+  // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
+  std::vector<Index> nonmanifold = m.bridge_vertices;
+  nonmanifold.insert(nonmanifold.end(), m.coincident.begin(), m.coincident.end());
   for (Index e = 0; e < conn.num_edges(); ++e)
     if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
       nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
@@ -147,10 +186,21 @@ const Layout& GeodesicSolver::layout() const { return impl_->layout; }
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 
+bool GeodesicSolver::needs_double() const {
+  return (impl_->delaunay ? *impl_->delaunay : impl_->input).needs_double;
+}
+
+Precision GeodesicSolver::resolved_precision(Precision requested, bool input_faces) const {
+  if (requested != Precision::automatic) return requested;
+  const Triangulation& tri = input_faces || !impl_->delaunay ? impl_->input : *impl_->delaunay;
+  return tri.needs_double ? Precision::double_precision : Precision::single;
+}
+
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   // Per face one record (source, distances, edge lengths); per halfedge one radial link.
   const std::size_t nf = impl_->mesh.num_faces();
-  const std::size_t record = precision == Precision::single ? sizeof(FaceRecord<float>) : sizeof(FaceRecord<double>);
+  const std::size_t record =
+      resolved_precision(precision) == Precision::single ? sizeof(FaceRecord<float>) : sizeof(FaceRecord<double>);
   return nf * record + impl_->input.ring.size() * sizeof(Index);
 }
 
@@ -177,7 +227,9 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
   for (const Source& s : sources) vertex_sources_only &= s.kind == Source::Kind::vertex;
   const bool use_delaunay = impl_->delaunay && vertex_sources_only && !options.want_face_sources;
   const Triangulation& tri = use_delaunay ? *impl_->delaunay : impl_->input;
-  if (options.precision == Precision::single) return impl_->run<float>(tri, sources, options);
+  const bool single = options.precision == Precision::single ||
+                      (options.precision == Precision::automatic && !tri.needs_double);
+  if (single) return impl_->run<float>(tri, sources, options);
   return impl_->run<double>(tri, sources, options);
 }
 
@@ -190,6 +242,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
+  result.stats.double_precision = std::is_same_v<Real, double>;
   std::vector<QueueEntry<Real>> queue;
   queue.reserve(std::max<std::size_t>(64, nf / 4));
   std::optional<detail::TargetSet<Real>> goal;   // only for runs with targets
@@ -215,23 +268,38 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<Real> vmin(nv, inf);
   std::vector<Index> vlabel(nv, kInvalidIndex);
   std::size_t faces_reached = 0;
-  constexpr std::size_t kBlock = 256;
-  Real corner[3 * kBlock];
-  for (std::size_t begin = 0; begin < nf; begin += kBlock) {
-    const std::size_t end = std::min(nf, begin + kBlock);
-    corner_distances(&state[begin], end - begin, corner);
-    for (std::size_t fi = begin; fi < end; ++fi) {
-      const bool reached = state[fi].reached();
-      faces_reached += reached;
-      const Index label = reached ? state[fi].source() : kInvalidIndex;
-      const Triangle& t = tri.triangles[fi];
-      for (Index i = 0; i < 3; ++i) {
-        const Real d = corner[3 * (fi - begin) + i];
-        const bool better = d < vmin[t[i]];
-        vmin[t[i]] = better ? d : vmin[t[i]];
-        vlabel[t[i]] = better ? label : vlabel[t[i]];
+  // Lowers vmin to the faces' corner values (never raises: later rounds keep what relaxation
+  // found).
+  auto gather = [&] {
+    faces_reached = 0;
+    constexpr std::size_t kBlock = 256;
+    Real corner[3 * kBlock];
+    for (std::size_t begin = 0; begin < nf; begin += kBlock) {
+      const std::size_t end = std::min(nf, begin + kBlock);
+      corner_distances(&state[begin], end - begin, corner);
+      for (std::size_t fi = begin; fi < end; ++fi) {
+        const bool reached = state[fi].reached();
+        faces_reached += reached;
+        const Index label = reached ? state[fi].source() : kInvalidIndex;
+        const Triangle& t = tri.triangles[fi];
+        for (Index i = 0; i < 3; ++i) {
+          const Real d = corner[3 * (fi - begin) + i];
+          const bool better = d < vmin[t[i]];
+          vmin[t[i]] = better ? d : vmin[t[i]];
+          vlabel[t[i]] = better ? label : vlabel[t[i]];
+        }
       }
     }
+  };
+  gather();
+  // A targeted run stops once its targets are final: a resumed propagation would not.
+  const bool relax = !goal && options.vertex_relaxation;
+  if (relax) {
+    // The vertex sources are where the edge paths start.
+    for (const VertexSeed& vs : vertex_seeds)
+      if (Real(vs.value * scale) < vmin[vs.vertex])
+        vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
+    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, gather);
   }
   result.stats.faces_reached = faces_reached;
   // A vertex source's own value is exact and wins ties against the faces; of several sources
@@ -257,7 +325,9 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
   }
   for (const VertexSeed& vs : seeds) {
-    if (!(vs.value <= double(vmin[vs.vertex]) * mean_edge)) continue;
+    // Exact (model units) unless a face or an edge found the vertex closer; after relaxation
+    // vmin holds the seed itself rounded to the propagation's precision.
+    if (!(vs.value <= double(vmin[vs.vertex]) * mean_edge * (relax ? 1 + 1e-6 : 1.0))) continue;
     const Index in = layout.vertex_order[vs.vertex];
     const bool keep = vs.value <= cutoff;
     result.vertex_distance[in] = keep ? vs.value : inf_d;

@@ -36,6 +36,31 @@ double mean_edge_length(const std::vector<double>& length, const std::vector<boo
   return (n > 0 && sum > 0) ? sum / double(n) : 1.0;
 }
 
+void snap_zero_lengths(std::vector<double>& length) {
+  for (std::size_t f = 0; 3 * f < length.size(); ++f) {
+    double* l = &length[3 * f];
+    const double longest = std::max({l[0], l[1], l[2]});
+    for (int i = 0; i < 3; ++i)
+      if (l[i] <= kZeroEdge * longest) l[i] = 0;
+  }
+}
+
+bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
+  for (std::size_t f = 0; f < skipped_face.size(); ++f) {
+    if (skipped_face[f]) continue;
+    double s[3] = {length[3 * f], length[3 * f + 1], length[3 * f + 2]};
+    std::sort(s, s + 3, [](double x, double y) { return x > y; });
+    const double x = s[0], y = s[1], z = s[2];   // x >= y >= z
+    if (!(x > 0)) continue;                       // all corners at one point: nothing to unfold
+    // 16 area^2 by Heron's formula in Kahan's ordering (accurate for needles and caps).
+    const double p = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));
+    const double four_area = std::sqrt(std::max(0.0, p));
+    const double height = four_area / (2 * x);    // over the longest edge
+    if (!(height * kFloatAspectLimit > x)) return true;
+  }
+  return false;
+}
+
 void validate_halfedge_lengths(const TriangleMesh& mesh, const std::vector<double>& length) {
   if (length.size() != 3 * mesh.num_faces())
     throw InvalidInput("edge lengths: " + std::to_string(length.size()) + " values for " +

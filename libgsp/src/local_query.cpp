@@ -54,7 +54,8 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
     throw InvalidInput("max_distance must be >= 0");
   if (impl_->custom_lengths && options.want_face_sources)
     throw InvalidInput("per-face virtual sources are 3D points: not with SolverOptions::edge_lengths");
-  if (options.precision == Precision::single) return impl_->run_local<float>(sources, options, workspace);
+  if (resolved_precision(options.precision, /*input_faces=*/true) == Precision::single)
+    return impl_->run_local<float>(sources, options, workspace);
   return impl_->run_local<double>(sources, options, workspace);
 }
 
@@ -73,6 +74,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
 
   LocalField result;
   result.stats.mean_edge_length = mean_edge;
+  result.stats.double_precision = std::is_same_v<Real, double>;
   ws.seeded.clear();
   ws.vertex_seeds.clear();
   buf.queue.clear();

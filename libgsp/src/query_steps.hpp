@@ -3,6 +3,7 @@
 // (local_query.cpp). Templates on the scalar type; included by both.
 #include "parallel_propagation.hpp"
 #include "solver_impl.hpp"
+#include "vertex_relaxation.hpp"
 
 #include <gsp/errors.hpp>
 
@@ -151,22 +152,24 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   };
   propagate();
 
-  // Bridges: a vertex joining fans that share no edge passes the front on as a virtual source
-  // at the vertex. Each round only lowers distances, so this ends; manifold meshes skip it.
-  for (bool changed = !bridge_vertices.empty(); changed;) {
-    changed = false;
-    for (Index v : bridge_vertices) {
-      Real best = inf;
-      Index label = kInvalidIndex;
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+  // Bridges: a vertex joining fans that share no edge, and a group of coincident vertices
+  // (joined by zero-length edges), pass the front on as a virtual source at that point. Each
+  // round only lowers distances, so this ends; meshes without either skip it.
+  auto pass_on = [&](const Index* begin, const Index* end) {
+    Real best = inf;
+    Index label = kInvalidIndex;
+    for (const Index* v = begin; v != end; ++v)
+      for (Index k = tri.corner_begin[*v]; k < tri.corner_begin[*v + 1]; ++k) {
         const Index c = tri.corners[k];
         const FaceRecord<Real>& st = state[face_of(c)];
         if (!st.reached()) continue;
         const Real d = corner_distance(st, corner_of(c));
         if (d < best) best = d, label = st.source();
       }
-      if (!(best <= limit)) continue;
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+    if (!(best <= limit)) return false;
+    bool changed = false;
+    for (const Index* v = begin; v != end; ++v)
+      for (Index k = tri.corner_begin[*v]; k < tri.corner_begin[*v + 1]; ++k) {
         const Index c = tri.corners[k];
         const Index fc = face_of(c);
         if (skipped_face[fc]) continue;
@@ -180,10 +183,58 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
           state[fc] = before;
         }
       }
-    }
+    return changed;
+  };
+  for (bool changed = !bridge_vertices.empty() || !coincident.empty(); changed;) {
+    changed = false;
+    for (const Index& v : bridge_vertices) changed |= pass_on(&v, &v + 1);
+    for (std::size_t g = 0; g + 1 < coincident_begin.size(); ++g)
+      changed |= pass_on(coincident.data() + coincident_begin[g], coincident.data() + coincident_begin[g + 1]);
     if (changed) propagate();
   }
 
+}
+
+// Rounds that seed pseudo-sources; the corpus needs at most 2 (docs/gsp-core.md). Past it the
+// values are still relaxed (so never above an edge path), only not propagated from.
+inline constexpr int kMaxRelaxationRounds = 32;
+// A vertex lowered by less than this (relative) keeps its lower value but seeds nothing. An edge
+// along the front lowers many vertices by GSP's own error (0.01-0.1%: d(u) + |uv| beats d(v) by
+// a hair where uv runs with the geodesic); seeding all of them cost 30-80% of a query for
+// 0.01-0.03 pp of MRE. Lowered by more than 1%, the face sources round the vertex failed it
+// (CAD parts, poles, soups): there a new round pays (docs/gsp-core.md, measurements).
+inline constexpr double kPseudoSourceGain = 1e-2;
+
+template <class Real, class Gather>
+void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const GeodesicOptions& options,
+                                          FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
+                                          std::vector<Real>& vmin, std::vector<Index>& vlabel, PropagationStats& stats,
+                                          Gather&& gather) const {
+  const double scale = 1.0 / mean_edge;
+  const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale)
+                                                         : std::numeric_limits<Real>::infinity();
+  for (int round = 0;; ++round) {
+    std::size_t relaxed = 0;
+    const std::vector<Index> lowered =
+        detail::relax_along_edges<Real>(input.triangles, input.length, scale, skipped_face, input.corner_begin,
+                                        input.corners, limit, Real(kPseudoSourceGain), vmin, vlabel, relaxed);
+    stats.relaxed_vertices += relaxed;
+    if (lowered.empty() || round >= kMaxRelaxationRounds) return;
+    ++stats.relaxation_rounds;
+    stats.pseudo_sources += lowered.size();
+    queue.clear();
+    for (Index v : lowered)
+      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+        const Index c = tri.corners[k];
+        const Index f = face_of(c);
+        if (skipped_face[f]) continue;
+        if (seed_face(tri.length, f, kCornerWeights[corner_of(c)], scale, double(vmin[v]), vlabel[v], state))
+          queue.push_back({next_halfedge(c), state[f].dT});
+      }
+    if (queue.empty()) return;
+    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, nullptr);
+    gather();
+  }
 }
 
 }  // namespace gsp

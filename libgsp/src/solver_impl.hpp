@@ -35,6 +35,7 @@ struct Triangulation {
   std::vector<double> length;             // per halfedge, model units
   std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
+  bool needs_double = false;              // a face too thin for float lengths (Precision::automatic)
 
   mutable std::once_flag float_once, double_once;
   mutable std::vector<FaceRecord<float>> records_float;
@@ -104,6 +105,12 @@ struct GeodesicSolver::Impl {
   // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
   // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
   std::vector<Index> bridge_vertices;
+  // Vertices joined by zero-length edges (distinct vertices at one point: CAD exports, compound
+  // models): one point of the surface. A zero-length edge has no direction, so no face frame
+  // can be unfolded across it (the two faces' frames would be rotated arbitrarily against each
+  // other: distances down to 0 far from the source); it carries no propagation, and each group
+  // passes the front on like a bridge vertex. CSR: group g is coincident[coincident_begin[g]..).
+  std::vector<Index> coincident_begin{0}, coincident;
   std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
   double mean_edge = 1;
   bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
@@ -138,6 +145,7 @@ struct GeodesicSolver::Impl {
 
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_bridge_vertices();
+  void find_coincident_vertices(const Connectivity& conn);
   void build_delaunay();
   template <class Real>
   GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
@@ -155,6 +163,13 @@ struct GeodesicSolver::Impl {
   void seed(const Triangulation& tri, const std::vector<Source>& sources, FaceRecord<Real>* state,
             std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
             detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const;
+  // After the first propagation: vertices lowered along the input's edges seed their fans as
+  // pseudo-sources and the propagation resumes, until no edge lowers a vertex
+  // (vertex_relaxation.hpp). gather() folds the faces' corner values into vmin again.
+  template <class Real, class Gather>
+  void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
+                      std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
+                      PropagationStats& stats, Gather&& gather) const;
   template <class Real>
   void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,

@@ -37,6 +37,10 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["iterations"] = r.stats.iterations;
   ops["faces_reached"] = r.stats.faces_reached;
   ops["update_steps_per_face"] = faces ? double(r.stats.update_steps) / double(faces) : 0.0;
+  ops["double_precision"] = r.stats.double_precision;
+  ops["relaxed_vertices"] = r.stats.relaxed_vertices;
+  ops["pseudo_sources"] = r.stats.pseudo_sources;
+  ops["relaxation_rounds"] = r.stats.relaxation_rounds;
 }
 
 // --separate: a field per source, written next to each other; --matrix: the distances between
@@ -135,6 +139,7 @@ void run(cli::Context& ctx, const Options& o) {
     if (!(o.separate || o.matrix)) go.threads = o.threads;
     ctx.settings()["strategy"] = o.strategy;
     ctx.settings()["precision"] = o.precision;
+    ctx.settings()["precision_used"] = solver.resolved_precision(precision) == Precision::single ? "single" : "double";
     ctx.settings()["heuristic"] = o.heuristic;
     ctx.settings()["step"] = o.f;
     ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";

@@ -40,8 +40,9 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--strategy", o.strategy,
                  "queue strategy: speed-limiter (default), static-postpone, dynamic-postpone, "
                  "hybrid-postpone, bfs, priority-queue");
-  app.add_option("--precision", o.precision, "single (default) or double")
-      ->check(CLI::IsMember({"single", "double"}));
+  app.add_option("--precision", o.precision,
+                 "auto (default: double where a face is too thin for float lengths), single or double")
+      ->check(CLI::IsMember({"auto", "single", "double"}));
   app.add_option("--heuristic", o.heuristic,
                  "visibility heuristic: published (default), centroid, opposite-corner, or a file "
                  "with 20 numbers");
@@ -83,7 +84,8 @@ Strategy parse_strategy(const std::string& name) {
 }
 
 Precision parse_precision(const std::string& name) {
-  return name == "double" ? Precision::double_precision : Precision::single;
+  if (name == "double") return Precision::double_precision;
+  return name == "single" ? Precision::single : Precision::automatic;
 }
 
 VisibilityHeuristic parse_heuristic(const std::string& name) {

@@ -24,7 +24,7 @@ struct Options {
   std::string max_distance;                   // empty: none
   std::string method = "gsp";                 // gsp | dijkstra
   std::string strategy = "speed-limiter";
-  std::string precision = "single";
+  std::string precision = "auto";
   std::string heuristic = "published";        // published | centroid | opposite-corner | FILE
   double f = 1.0;
   bool no_layout = false;

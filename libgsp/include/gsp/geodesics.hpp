@@ -46,7 +46,10 @@ enum class Strategy : std::uint8_t {
   priority_queue,    // Dijkstra order on d_T, a binary heap (for comparison)
 };
 
-enum class Precision : std::uint8_t { single, double_precision };
+// `automatic` (the default) is single precision unless the triangulation the query runs on has
+// a face whose shape float lengths cannot hold (GeodesicSolver::needs_double): CAD needles and
+// caps, whose unfolding in float is off by more than the face itself (docs/gsp-core.md).
+enum class Precision : std::uint8_t { single, double_precision, automatic };
 
 // Meshes with fewer faces propagate on one thread unless GeodesicOptions::threads says
 // otherwise: below it the threads' start-up and the messages cost more than they save.
@@ -58,7 +61,7 @@ inline constexpr std::size_t kParallelMinSeedsPerThread = 64;
 
 struct GeodesicOptions {
   Strategy strategy = Strategy::speed_limiter;
-  Precision precision = Precision::single;
+  Precision precision = Precision::automatic;
   double f = 1.0;        // speed limiter / static / dynamic postpone step, in mean edge lengths
   double f0 = 1.0;       // hybrid postpone
   double f1 = 0.1;       // hybrid postpone
@@ -87,6 +90,12 @@ struct GeodesicOptions {
   // so the front grows towards the targets instead of in every direction (paper Fig. 12a,b).
   std::vector<Index> targets;
   bool goal_directed = false;       // A*; needs targets
+  // Vertices as pseudo-sources (docs/gsp-core.md): after the propagation, vertex distances are
+  // relaxed along the input's edges, and vertices lowered by more than 1% seed their fans for
+  // another round, so no vertex ends farther than the shortest path along the mesh edges. Off:
+  // the paper's per-face virtual sources alone. Full queries without targets only: bounded
+  // queries (compute_local) and targeted runs (A*) do not relax yet.
+  bool vertex_relaxation = true;
 };
 
 // The virtual source a face ended up with: the geodesic to any point p of the face is the
@@ -107,6 +116,13 @@ struct PropagationStats {
   std::uint64_t iterations = 0;      // dual-queue rounds (heap pops for priority_queue)
   std::uint64_t faces_reached = 0;
   double mean_edge_length = 0;
+  // Vertices as pseudo-sources (docs/gsp-core.md): lowerings of a vertex's distance along an
+  // input edge after the propagation, the vertices lowered by more than 1% that then seeded
+  // their fans, and the propagation rounds this took.
+  std::uint64_t relaxed_vertices = 0;
+  std::uint64_t pseudo_sources = 0;
+  std::uint64_t relaxation_rounds = 0;
+  bool double_precision = false;     // the precision the query ran in (Precision::automatic decides)
 };
 
 struct GeodesicResult {
@@ -204,6 +220,12 @@ class GeodesicSolver {
   const SolverTimings& timings() const;
   std::size_t intrinsic_flips() const;   // edges flipped to make the intrinsic Delaunay triangulation
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
+  // True where a face of the triangulation vertex-source queries run on is too thin for
+  // single-precision lengths (Precision::automatic then runs in double).
+  bool needs_double() const;
+  // The precision a query with `requested` runs in: automatic resolved for vertex sources
+  // (face-point sources use the input faces: see compute()).
+  Precision resolved_precision(Precision requested, bool input_faces = false) const;
 
  private:
   struct Impl;

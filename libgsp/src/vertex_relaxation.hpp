@@ -1,0 +1,80 @@
+#pragma once
+// Vertices as pseudo-sources (internal): the per-vertex distances of a finished propagation
+// relaxed along the input's edges, and the vertices that this lowers seeded as virtual sources
+// for another propagation round.
+//
+// Why: a face keeps one virtual source, the one nearest its centroid, and its corners take
+// their distances from it. Where faces are large and the front is anisotropic (CAD parts,
+// fans round poles, soups joined at single vertices) the source that wins a face's centroid
+// is not the best one for every corner, and a corner can end up farther than the path along
+// one mesh edge from its neighbour: more than Dijkstra, which no geodesic method should be.
+// Exact window propagation treats a vertex the front reaches as a pseudo-source carrying its
+// distance; here a vertex whose distance an edge lowers becomes one: its fan is seeded with a
+// source at the vertex (sigma = its distance) and the propagation resumes from there. Each
+// round only lowers distances, each value stays the length of a path on the surface, and no
+// vertex ends farther than the shortest edge path (tests/geodesic_bounds_test.cpp).
+#include "face_record.hpp"
+
+#include <gsp/mesh.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace gsp::detail {
+
+// Lowers d[b] to d[a] + |ab| along the edges of `triangles` (lengths per halfedge, scaled to
+// the propagation's units), Dijkstra-ordered from every edge where that shortens something,
+// never past `limit`. Labels follow the value. Returns the vertices lowered by more than the
+// relative `gain` (each once): those worth a new propagation round; the others keep their new
+// value only. `relaxed` counts every lowering.
+template <class Real>
+std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, const std::vector<double>& length,
+                                     double scale, const std::vector<bool>& skipped_face,
+                                     const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
+                                     Real limit, Real gain, std::vector<Real>& d, std::vector<Index>& label,
+                                     std::size_t& relaxed) {
+  // A clearly shorter value only: rounding must not make two vertices lower each other forever.
+  constexpr Real kMargin = 1 - 8 * std::numeric_limits<Real>::epsilon();
+  using Item = std::pair<Real, Index>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  std::vector<Index> lowered;
+  auto offer = [&](Index from, Index to, Real len) {
+    const Real candidate = d[from] + len;
+    if (!(candidate < d[to] * kMargin) || !(candidate <= limit)) return;
+    if (candidate < d[to] * (1 - gain)) lowered.push_back(to);
+    ++relaxed;
+    d[to] = candidate;
+    label[to] = label[from];
+    heap.push({candidate, to});
+  };
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    if (skipped_face[f]) continue;
+    const Triangle& t = triangles[f];
+    for (Index i = 0; i < 3; ++i) {
+      const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
+      const Real len = Real(length[3 * f + i] * scale);
+      if (d[a] < d[b]) offer(a, b, len); else if (d[b] < d[a]) offer(b, a, len);
+    }
+  }
+  while (!heap.empty()) {
+    const auto [value, v] = heap.top();
+    heap.pop();
+    if (value > d[v]) continue;   // lowered again since
+    for (Index k = corner_begin[v]; k < corner_begin[v + 1]; ++k) {
+      const Index c = corners[k];
+      const Index f = face_of(c);
+      if (skipped_face[f]) continue;
+      const Index j = corner_of(c), jn = j == 2 ? 0 : j + 1, jp = j == 0 ? 2 : j - 1;
+      offer(v, triangles[f][jn], Real(length[3 * f + j] * scale));
+      offer(v, triangles[f][jp], Real(length[3 * f + jp] * scale));
+    }
+  }
+  std::sort(lowered.begin(), lowered.end());
+  lowered.erase(std::unique(lowered.begin(), lowered.end()), lowered.end());
+  return lowered;
+}
+
+}  // namespace gsp::detail

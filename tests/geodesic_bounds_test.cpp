@@ -1,0 +1,185 @@
+// The two bounds every distance field must respect, whatever the method: at least the straight
+// line to the source (no curve is shorter) and at most the shortest path along the mesh edges
+// (it is a path on the surface). Checked on built meshes that break them for a specific cause
+// (coincident vertices, needles, big faces round a non-manifold vertex), then on every mesh of
+// the shared development set and of the corpus beside it (docs/benchmarks.md, "Corpus").
+#include "helpers/mesh_builders.hpp"
+#include "test_data.hpp"
+
+#include <gsp/cli/load.hpp>
+#include <gsp/dijkstra.hpp>
+#include <gsp/geodesics.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace gsp;
+
+struct Bounds {
+  double below_line = 0;   // largest (line - d) / line over the vertices
+  double above_edges = 0;  // largest (d - edge path) / edge path
+  std::size_t nan = 0, unreached = 0;
+};
+
+Bounds bounds(const TriangleMesh& m, Index source, const std::vector<double>& d) {
+  const std::vector<double> edge = DijkstraSolver(m).compute({Source::at_vertex(source)}).vertex_distance;
+  Bounds b;
+  for (std::size_t v = 0; v < m.num_vertices(); ++v) {
+    if (std::isnan(d[v])) {
+      ++b.nan;
+      continue;
+    }
+    if (std::isfinite(edge[v]) && !std::isfinite(d[v])) ++b.unreached;
+    if (!std::isfinite(d[v])) continue;
+    const double line = distance(m.positions[v], m.positions[source]);
+    if (line > 0) b.below_line = std::max(b.below_line, (line - d[v]) / line);
+    if (edge[v] > 0) b.above_edges = std::max(b.above_edges, (d[v] - edge[v]) / edge[v]);
+  }
+  return b;
+}
+
+// A planar square grid whose centre vertex is split in two copies at one point, each used by
+// half of the centre's fan, the halves joined by two zero-area faces over the zero-length edge
+// between the copies. `offset` moves the second copy by that much (1e-16: not bit-identical,
+// so no weld merges them, as in CAD exports).
+TriangleMesh split_centre_grid(double offset) {
+  TriangleMesh m = test::grid(6);   // 7 x 7 vertices on [0, 6]^2
+  const Index centre = 3 * 7 + 3;
+  const Index copy = Index(m.positions.size());
+  m.positions.push_back(m.positions[centre] + Vec3{offset, 0, 0});
+  for (Triangle& t : m.triangles) {
+    bool upper = false;   // faces above the centre's row take the copy
+    for (Index v : t) upper |= v / 7 > 3;
+    if (upper)
+      for (Index& v : t)
+        if (v == centre) v = copy;
+  }
+  m.triangles.push_back({centre, copy, centre - 1});
+  m.triangles.push_back({copy, centre, centre + 1});
+  return m;
+}
+
+TEST(GeodesicBounds, CoincidentVerticesAreOnePoint) {
+  // The zero-length edge has no direction: unfolded across it (or through the intrinsic flips
+  // next to it) the source landed anywhere, down to distance 0 far from it.
+  for (double offset : {0.0, 1e-16}) {
+    const TriangleMesh m = split_centre_grid(offset);
+    for (Index source : {Index(0), Index(6), Index(45), Index(24)}) {
+      const GeodesicResult r = geodesic_distances(m, {Source::at_vertex(source)});
+      for (std::size_t v = 0; v < m.num_vertices(); ++v)
+        EXPECT_NEAR(r.vertex_distance[v], distance(m.positions[v], m.positions[source]), 1e-5)
+            << "offset " << offset << " source " << source << " vertex " << v;
+    }
+  }
+}
+
+// A planar fan of needles: n thin triangles round vertex 0 spanning a few degrees, each about
+// 1e5 times longer than wide; then a regular cap so the fan is entered over its short edges.
+TriangleMesh needle_fan(int n) {
+  TriangleMesh m;
+  m.positions.push_back({0, 0, 0});
+  for (int i = 0; i <= n; ++i) {
+    const double a = 1e-5 * i;
+    m.positions.push_back({std::cos(a), std::sin(a), 0});
+  }
+  for (int i = 0; i < n; ++i) m.triangles.push_back({0, Index(i + 1), Index(i + 2)});
+  // The far side: a regular triangle on the fan's outer edge.
+  m.positions.push_back({1.5, 1e-5 * n / 2, 0});
+  m.triangles.push_back({1, Index(m.positions.size() - 1), Index(n + 1)});
+  return m;
+}
+
+TEST(GeodesicBounds, NeedlesRunInDouble) {
+  const TriangleMesh fan = needle_fan(20);
+  SolverOptions input_faces;
+  input_faces.intrinsic_delaunay = false;   // keep the needles
+  const GeodesicSolver solver(fan, input_faces);
+  EXPECT_TRUE(solver.needs_double());
+  EXPECT_EQ(solver.resolved_precision(Precision::automatic), Precision::double_precision);
+  EXPECT_EQ(solver.resolved_precision(Precision::single), Precision::single);
+  const Index far = Index(fan.num_vertices() - 1);
+  const GeodesicResult r = solver.compute({Source::at_vertex(far)});
+  EXPECT_TRUE(r.stats.double_precision);
+  const Bounds b = bounds(fan, far, r.vertex_distance);
+  EXPECT_LE(b.below_line, 1e-12);   // planar: a line in the plane is the shortest path
+  EXPECT_LE(b.above_edges, 1e-12);
+
+  const GeodesicSolver regular(test::grid(8));
+  EXPECT_FALSE(regular.needs_double());
+  EXPECT_FALSE(regular.compute({Source::at_vertex(0)}).stats.double_precision);
+}
+
+TEST(GeodesicBounds, BuiltMeshesKeepBothBounds) {
+  const std::vector<TriangleMesh> meshes = {test::icosphere(3), test::cylinder(24, 8), test::bowtie(),
+                                            test::book(), test::duplicate_and_degenerate(),
+                                            split_centre_grid(0.0), needle_fan(20)};
+  for (std::size_t k = 0; k < meshes.size(); ++k)
+    for (Index s = 0; s < 3; ++s) {
+      const Bounds b = bounds(meshes[k], s, geodesic_distances(meshes[k], {Source::at_vertex(s)}).vertex_distance);
+      EXPECT_LE(b.below_line, 1e-5) << "mesh " << k << " source " << s;
+      EXPECT_LE(b.above_edges, 1e-5) << "mesh " << k << " source " << s;
+      EXPECT_EQ(b.nan, 0u);
+      EXPECT_EQ(b.unreached, 0u);
+    }
+}
+
+// Every mesh file of a folder (not point clouds), as the apps load them.
+std::vector<std::string> mesh_files(const std::string& folder) {
+  std::vector<std::string> files;
+  if (!std::filesystem::is_directory(folder)) return files;
+  for (const auto& e : std::filesystem::directory_iterator(folder)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".gltf" || ext == ".glb")
+      files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Over the shared meshes and the corpus: no NaN, nothing the edge graph reaches left
+// unreached, and never above the edge path (vertices relaxed along the input's edges become
+// pseudo-sources). The straight-line bound is measured, not asserted: some CAD parts and
+// coarse scans still go below it (docs/benchmarks.md lists them); the count must not grow.
+TEST(GeodesicBounds, SharedMeshesAndCorpus) {
+  if (!test::have_shared_data()) GTEST_SKIP() << "shared meshes not found at " << test::data_dir();
+  std::vector<std::string> files = mesh_files(test::data_dir());
+  const std::vector<std::string> corpus = mesh_files(test::data_dir() + "/../corpus");
+  files.insert(files.end(), corpus.begin(), corpus.end());
+  std::size_t checked = 0, below = 0;
+  for (const std::string& path : files) {
+    cli::LoadedMesh in;
+    try {
+      in = cli::load_mesh(path, {});
+    } catch (const Error&) {
+      continue;   // a point cloud, or a file the readers reject (tested in io_broken_files)
+    }
+    const TriangleMesh& m = in.mesh;
+    if (m.num_faces() == 0) continue;
+    const GeodesicSolver solver(m);
+    std::mt19937_64 rng(m.num_vertices());
+    for (int k = 0; k < 2; ++k) {
+      const Index s = Index(m.triangles[rng() % m.num_faces()][0]);
+      const Bounds b = bounds(m, s, solver.compute({Source::at_vertex(s)}).vertex_distance);
+      EXPECT_LE(b.above_edges, 1e-5) << path << " source " << s;
+      EXPECT_EQ(b.nan, 0u) << path;
+      EXPECT_EQ(b.unreached, 0u) << path;
+      below += b.below_line > 0.01;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0u);
+  // Measured: 13 of 188 fields (94 meshes, 2 sources each) more than 1% below the line; the
+  // meshes are listed in docs/benchmarks.md ("Corpus").
+  EXPECT_LE(below, 13u) << below << " of " << checked << " fields more than 1% below the straight line";
+  RecordProperty("fields_below_line", int(below));
+}
+
+}  // namespace
