@@ -1,5 +1,6 @@
 #include "corpus_report.hpp"
 
+#include "format.hpp"
 #include "report.hpp"
 
 #include <cmath>
@@ -9,31 +10,9 @@ namespace gsp::bench {
 
 namespace {
 
-cli::Json number_or_null(double d) { return std::isfinite(d) ? cli::Json(d) : cli::Json(); }
 cli::Json tri_state(int v) { return v < 0 ? cli::Json() : cli::Json(v == 1); }
 
-std::string field(double d) {
-  if (!std::isfinite(d)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", d);
-  return buf;
-}
-std::string field(const std::string& s) {   // RFC 4180 quoting, as report.cpp
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
 std::string tri_field(int v) { return v < 0 ? "" : std::to_string(v); }
-
-// A number right-aligned in `width`, "-" when it does not apply.
-std::string cell(double v, int width, const char* format) {
-  char num[48], buf[64];
-  if (std::isfinite(v)) std::snprintf(num, sizeof num, format, v);
-  else std::snprintf(num, sizeof num, "-");
-  std::snprintf(buf, sizeof buf, "%*s", width, num);
-  return buf;
-}
 
 const CorpusMethod* any_method(const CorpusRow& row, const std::string& name) {
   for (const CorpusMethod& m : row.methods)

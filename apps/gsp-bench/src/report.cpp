@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -36,22 +38,6 @@ std::string hex(std::uint64_t h) {
   char buf[17];
   std::snprintf(buf, sizeof buf, "%016" PRIx64, h);
   return buf;
-}
-
-cli::Json number_or_null(double d) { return std::isfinite(d) ? cli::Json(d) : cli::Json(); }
-
-// CSV field: numbers with enough digits to read back; text quoted when it has to be (RFC 4180).
-std::string field(double d) {
-  if (!std::isfinite(d)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", d);
-  return buf;
-}
-std::string field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
 }
 
 // The bound columns; empty where no distances were checked (a skipped method).

@@ -1,5 +1,7 @@
 #include "table.hpp"
 
+#include "format.hpp"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -16,18 +18,6 @@ void appendf(std::string& out, const char* format, ...) {
   std::vsnprintf(buf, sizeof buf, format, args);
   va_end(args);
   out += buf;
-}
-
-// A number right-aligned in `width`, "-" when it does not apply.
-std::string cell(double v, int width, const char* format) {
-  char buf[64];
-  if (!std::isfinite(v)) std::snprintf(buf, sizeof buf, "%*s", width, "-");
-  else {
-    char num[48];
-    std::snprintf(num, sizeof num, format, v);
-    std::snprintf(buf, sizeof buf, "%*s", width, num);
-  }
-  return buf;
 }
 
 double time_of(const MeshRun& run, Method id) {
