@@ -86,8 +86,14 @@ def spread(values):
     return v.size, v.mean(), np.median(v), np.percentile(v, 95), v.max()
 
 
-def is_false(v):
-    return v in (0, "0", False, "false", "False")
+# GSP counts as less accurate only beyond this MRE difference (gsp-bench's kMreTie): below it
+# the difference is GSP's single-precision rounding on meshes where the baseline is exact.
+MRE_TIE = 1e-6
+
+
+def gsp_worse(row, other):
+    g, o = value(row, "gsp_mre"), value(row, other + "_mre")
+    return math.isfinite(g) and math.isfinite(o) and g > o + MRE_TIE
 
 
 def aggregate(rows):
@@ -98,8 +104,8 @@ def aggregate(rows):
         counts = {
             "run": len(ok), "failed": len(rs) - len(ok),
             "with exact": sum(value(r, "exact_references") > 0 for r in ok),
-            "GSP worse than Dijkstra": sum(is_false(r.get("gsp_beats_dijkstra", "")) for r in ok),
-            "GSP worse than heat": sum(is_false(r.get("gsp_beats_heat", "")) for r in ok),
+            "GSP worse than Dijkstra": sum(gsp_worse(r, "dijkstra") for r in ok),
+            "GSP worse than heat": sum(gsp_worse(r, "heat") for r in ok),
             "bound broken by > 1%": sum(value(r, "gsp_violates_bounds") > 0 for r in ok),
         }
         figures = [(label, [value(r, key) * scale for r in ok]) for key, label, scale in FIGURES]

@@ -96,6 +96,8 @@ TEST(BenchCorpus, BrokenFileIsAFailedRowAndTheRunGoesOn) {
   EXPECT_EQ(all["meshes_run"].num, 1);
   EXPECT_EQ(all["failed"].num, 1);
   EXPECT_EQ(all["with_exact"].num, 1);
+  EXPECT_EQ(all["gsp_worse_than_dijkstra"].num, 0);
+  EXPECT_EQ(all["gsp_worse_than_heat"].num, 0);
   EXPECT_EQ(all["figures"]["gsp_mre"]["n"].num, 1);
   EXPECT_DOUBLE_EQ(all["figures"]["gsp_mre"]["median"].num, gsp["mre"].num);
   EXPECT_DOUBLE_EQ(all["figures"]["gsp_mre"]["worst"].num, gsp["mre"].num);
@@ -133,6 +135,20 @@ TEST(BenchCorpus, UserFlagsOverrideTheCorpusDefaults) {
   EXPECT_EQ(bench_method(row, "gsp")["mre"].type, JsonValue::null);   // no exact: no error
   EXPECT_EQ(run_bench("--corpus " + quote((dir / "grid.off").string()) + " --shard 0/2", dir).exit_code, 2);
   EXPECT_EQ(run_bench(quote((dir / "grid.off").string()) + " --categories x.md", dir).exit_code, 2);
+}
+
+// A single triangle: every vertex is an edge away from the source, so Dijkstra is exact and
+// GSP's single-precision rounding (MRE ~1e-8) is a tie, not a loss.
+TEST(BenchCorpus, RoundingAgainstAnExactBaselineIsATie) {
+  ScratchDir dir("corpus");
+  write_file(dir / "triangle.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const auto r = run_bench("--corpus " + quote((dir / "triangle.off").string()) + " --no-table --json -", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue doc = parse_json(r.out);
+  const JsonValue& row = row_of(doc, "triangle.off");
+  EXPECT_EQ(bench_method(row, "dijkstra")["mre"].num, 0.0);
+  EXPECT_LT(bench_method(row, "gsp")["mre"].num, 1e-6);
+  EXPECT_EQ(aggregate_of(doc, "all")["gsp_worse_than_dijkstra"].num, 0);
 }
 
 // On a plane the geodesic is the straight line: GSP and Dijkstra never fall below it, and

@@ -71,6 +71,11 @@ int gsp_beats(const CorpusRow& row, const std::string& other) {
   return g < o ? 1 : 0;
 }
 
+bool gsp_worse(const CorpusRow& row, const std::string& other) {
+  const double g = row.mre("gsp"), o = row.mre(other);
+  return std::isfinite(g) && std::isfinite(o) && g > o + kMreTie;
+}
+
 bool gsp_violates(const CorpusRow& row) {
   const CorpusMethod* g = row.method("gsp");
   return g && g->has_bounds && violates(g->bounds);

@@ -40,6 +40,12 @@ CorpusRow failed_row(const std::string& path, const std::string& category, const
 // GSP's MRE below the other method's: 1 yes, 0 no, -1 unknown (either has no MRE).
 int gsp_beats(const CorpusRow& row, const std::string& other);
 
+// GSP's MRE above the other's by more than kMreTie: less accurate, not a tie. On meshes where
+// every vertex is an edge away from the source (a single triangle) Dijkstra is exact and GSP's
+// single-precision state leaves an MRE of ~1e-8: rounding, not a loss.
+constexpr double kMreTie = 1e-6;
+bool gsp_worse(const CorpusRow& row, const std::string& other);
+
 // GSP ran and broke a physical bound by more than 1%, or gave a NaN.
 bool gsp_violates(const CorpusRow& row);
 

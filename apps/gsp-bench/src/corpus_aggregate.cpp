@@ -75,8 +75,8 @@ std::vector<CategoryAggregate> aggregate(const std::vector<CorpusRow>& rows) {
       }
       ++a.run;
       a.with_exact += r->exact_references > 0;
-      a.gsp_worse_than_dijkstra += gsp_beats(*r, "dijkstra") == 0;
-      a.gsp_worse_than_heat += gsp_beats(*r, "heat") == 0;
+      a.gsp_worse_than_dijkstra += gsp_worse(*r, "dijkstra");
+      a.gsp_worse_than_heat += gsp_worse(*r, "heat");
       a.violating_bounds += gsp_violates(*r);
     }
     for (const auto& [name, figure] : figures()) {
