@@ -8,3 +8,12 @@ if(TARGET gsp-bench)
   gsp_test(bench_points_test SOURCES bench_points_test.cpp DEPS gsp::io)
   add_dependencies(bench_points_test gsp-bench)
 endif()
+if(TARGET gsp-bench)
+  # The app's bounds and category lookup, compiled in: unit tests without the binary.
+  set(GSP_BENCH_SRC ${CMAKE_SOURCE_DIR}/apps/gsp-bench/src)
+  gsp_test(bench_bounds_test SOURCES bench_bounds_test.cpp ${GSP_BENCH_SRC}/bounds.cpp ${GSP_BENCH_SRC}/categories.cpp
+           DEPS gsp::core)
+  target_include_directories(bench_bounds_test PRIVATE ${GSP_BENCH_SRC})
+  gsp_test(bench_corpus_test SOURCES bench_corpus_test.cpp DEPS gsp::io)
+  add_dependencies(bench_corpus_test gsp-bench)
+endif()

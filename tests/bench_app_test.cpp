@@ -33,7 +33,8 @@ const std::vector<std::string> kCsvColumns = {
     "mesh", "vertices", "faces", "method", "status", "sources", "repetitions", "precompute_s", "query_s",
     "vertices_per_s", "cycles_per_vertex", "update_steps_per_triangle", "mre", "max_re", "unreached",
     "state_bytes_per_vertex", "solver_bytes_per_vertex", "vs_dijkstra", "vs_heat", "vs_heat_idt", "vs_gsp",
-    "exact_cached", "clock"};
+    "exact_cached", "clock", "below_line", "below_line_count", "above_edge", "above_edge_count",
+    "edge_unreached", "nan_count"};
 
 std::vector<double> sources_of(const JsonValue& method) {
   std::vector<double> out;

@@ -2,6 +2,7 @@
 
 #include "exact_cache.hpp"
 
+#include <gsp/dijkstra.hpp>
 #include <gsp/errors.hpp>
 
 #include <algorithm>
@@ -22,6 +23,21 @@ double heap_delta(std::size_t before) {
 
 std::size_t count_finite(const std::vector<double>& d) {
   return std::size_t(std::count_if(d.begin(), d.end(), [](double x) { return std::isfinite(x); }));
+}
+
+// Edge-path distances per source (the upper bound of bounds.hpp), computed once per mesh and
+// shared by every method; empty per source where the edge graph cannot be built.
+std::vector<std::vector<double>> edge_paths(const BenchMesh& mesh, const std::vector<Index>& sources,
+                                            const NoteFn& note) {
+  std::vector<std::vector<double>> out(sources.size());
+  try {
+    const DijkstraSolver solver(mesh.mesh);
+    for (std::size_t k = 0; k < sources.size(); ++k)
+      out[k] = solver.compute({Source::at_vertex(sources[k])}).vertex_distance;
+  } catch (const Error& e) {
+    note(mesh.name + ": no edge-path bound: " + e.what());
+  }
+  return out;
 }
 
 // One timed query; the outcome is destroyed by the caller, after the clocks stop.
@@ -45,7 +61,8 @@ void time_runs(Runner& runner, Index source, int repetitions, bool cpu_clock, So
 // Exact distances per source: read from the cache, computed when `exact` is among the methods
 // (then timed once per source: seconds each, no repetitions), or absent.
 MethodRun exact_references(const BenchMesh& mesh, const std::vector<Index>& sources, const BenchConfig& config,
-                           bool timed, std::vector<std::optional<std::vector<double>>>& refs,
+                           bool timed, const std::vector<std::vector<double>>& edge,
+                           std::vector<std::optional<std::vector<double>>>& refs,
                            std::size_t& cached, const StepFn& step, const NoteFn& note) {
   MethodRun r;
   r.method = method_info(Method::exact);
@@ -75,6 +92,8 @@ MethodRun exact_references(const BenchMesh& mesh, const std::vector<Index>& sour
                       sources[k], sr.seconds.back());
         note(line);
       }
+      sr.bounds = physical_bounds(mesh.mesh, sources[k], *refs[k], edge[k]);
+      sr.has_bounds = true;
       r.sources.push_back(std::move(sr));
       step();
     }
@@ -93,7 +112,8 @@ MethodRun exact_references(const BenchMesh& mesh, const std::vector<Index>& sour
 }
 
 MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std::vector<Index>& sources,
-                       const BenchConfig& config, const std::vector<std::optional<std::vector<double>>>& refs,
+                       const BenchConfig& config, const std::vector<std::vector<double>>& edge,
+                       const std::vector<std::optional<std::vector<double>>>& refs,
                        const StepFn& step, const NoteFn& note) {
   MethodRun r;
   r.method = info;
@@ -113,8 +133,11 @@ MethodRun bench_method(const MethodInfo& info, const BenchMesh& mesh, const std:
         sr.reached = count_finite(warm.distance);
         sr.stats = warm.stats;
         sr.has_stats = warm.has_stats;
+        const std::vector<double> d = runner->to_mesh_order(std::move(warm.distance));
+        sr.bounds = physical_bounds(mesh.mesh, sources[k], d, edge[k]);
+        sr.has_bounds = true;
         if (refs[k]) {
-          sr.errors = relative_errors(runner->to_mesh_order(std::move(warm.distance)), *refs[k]);
+          sr.errors = relative_errors(d, *refs[k]);
           sr.has_errors = true;
         }
       }
@@ -142,8 +165,9 @@ MeshRun bench_mesh(const BenchMesh& mesh, const std::vector<Index>& sources, con
   run.sources = sources;
   const bool exact_timed = std::any_of(config.methods.begin(), config.methods.end(),
                                        [](const MethodInfo& m) { return m.id == Method::exact; });
+  const std::vector<std::vector<double>> edge = edge_paths(mesh, sources, note);
   std::vector<std::optional<std::vector<double>>> refs;
-  MethodRun exact = exact_references(mesh, sources, config, exact_timed, refs, run.exact_cached, step, note);
+  MethodRun exact = exact_references(mesh, sources, config, exact_timed, edge, refs, run.exact_cached, step, note);
   run.exact_references = std::size_t(std::count_if(refs.begin(), refs.end(), [](const auto& d) { return d.has_value(); }));
   if (run.exact_references < sources.size())
     run.notes.push_back(run.exact_references == 0
@@ -156,7 +180,7 @@ MeshRun bench_mesh(const BenchMesh& mesh, const std::vector<Index>& sources, con
       run.methods.push_back(exact);
       continue;
     }
-    run.methods.push_back(bench_method(info, mesh, sources, config, refs, step, note));
+    run.methods.push_back(bench_method(info, mesh, sources, config, edge, refs, step, note));
     if (!run.methods.back().ok()) run.notes.push_back(std::string(info.name) + " skipped: " + run.methods.back().skipped);
   }
   return run;

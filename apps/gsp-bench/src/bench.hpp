@@ -3,6 +3,7 @@
 // each method in turn: precompute (timed), per source one warm-up run (its distances give the
 // errors) and R timed repetitions. Methods run one after another, never interleaved, so each
 // finds the caches as its own queries left them.
+#include "bounds.hpp"
 #include "measure.hpp"
 #include "methods.hpp"
 #include "workload.hpp"
@@ -29,6 +30,8 @@ struct SourceRun {
   bool has_errors = false;       // an exact reference was available
   ErrorStats errors;
   bool from_cache = false;       // exact only: read from the cache, not computed in this run
+  bool has_bounds = false;       // the warm-up's distances checked against the physical bounds
+  BoundStats bounds;
 };
 
 struct MethodRun {

@@ -5,17 +5,19 @@
 //
 //   gsp-bench fertility.off camelhead.off --sources 4 --cache exact-cache --csv bench.csv
 //   gsp-bench *.obj --methods gsp,dijkstra,heat --shard 1/4 --json part1.json
+//   gsp-bench --corpus ../shared/data/corpus --cache exact-cache --csv corpus.csv
 //
 // Meshes CGAL refuses (non-manifold, degenerate faces) get the exact and heat methods skipped
 // with a note; the others are still timed. See docs/apps/gsp-bench.md.
 #include "bench.hpp"
+#include "corpus_main.hpp"
 #include "exact_cache.hpp"
 #include "options.hpp"
+#include "output.hpp"
 #include "report.hpp"
 #include "table.hpp"
 
 #include <gsp/cli/app.hpp>
-#include <gsp/io/atomic_file.hpp>
 
 #include <cstdio>
 #include <memory>
@@ -25,23 +27,6 @@ namespace {
 
 using namespace gsp;
 using namespace gsp::bench;
-
-// An output given by path: opened (and checked writable) before the work, committed after;
-// "-" is stdout.
-class Output {
- public:
-  explicit Output(const std::string& path) : stdout_(path == "-") {
-    if (!path.empty() && !stdout_) file_ = std::make_unique<io::AtomicFile>(path);
-  }
-  void write(const std::string& text) {
-    if (stdout_) std::fwrite(text.data(), 1, text.size(), stdout);
-    else if (file_) file_->write(text.data(), text.size()), file_->commit();
-  }
-
- private:
-  bool stdout_;
-  std::unique_ptr<io::AtomicFile> file_;
-};
 
 cli::Json settings_json(const Options& o, const Settings& s) {
   cli::Json j;
@@ -68,8 +53,9 @@ cli::Json machine_json() {
   return j;
 }
 
-void run(cli::Context& ctx, const Options& o) {
+void run(cli::Context& ctx, Options& o) {
   const Settings settings = check_options(o, ctx.stats_to_stdout());
+  if (o.corpus) return run_corpus(ctx, o, settings);
   Output json(o.json), csv(o.csv);   // fail on an unwritable path before any work
 
   std::vector<BenchMesh> meshes;

@@ -7,14 +7,27 @@
 namespace gsp::bench {
 
 void add_options(CLI::App& app, Options& o) {
-  app.add_option("MESH", o.meshes, "meshes to benchmark (.ply .obj .off .stl .gltf .glb)")->required();
+  app.add_option("MESH", o.meshes, "meshes to benchmark (.ply .obj .off .stl .gltf .glb); with --corpus also folders")
+      ->required();
+  app.add_flag("--corpus", o.corpus,
+               "corpus evaluation: every mesh of each folder, one row per mesh, failures kept as rows, "
+               "aggregate per category (defaults: --methods " + std::string(corpus_method_list()) +
+                   " --sources 3 --repetitions 1)");
+  app.add_option("--categories", o.categories,
+                 "--corpus: markdown table (File, Character columns) giving each mesh benign/malign (default: "
+                 "the SOURCES.md beside each mesh)")
+      ->type_name("FILE");
   app.add_option("--methods", o.methods, "comma-separated methods (default: all; see docs/apps/gsp-bench.md): " +
                                              method_names())
-      ->type_name("LIST");
-  app.add_option("--sources", o.sources, "random source vertices per mesh (default 4)")->check(CLI::Range(1, 100000));
+      ->type_name("LIST")
+      ->each([&o](const std::string&) { o.methods_given = true; });
+  app.add_option("--sources", o.sources, "random source vertices per mesh (default 4)")
+      ->check(CLI::Range(1, 100000))
+      ->each([&o](const std::string&) { o.sources_given = true; });
   app.add_option("--seed", o.seed, "seed of the source picks and of the random layout (default 1)");
   app.add_option("--repetitions", o.repetitions, "timed runs per source after one warm-up; the median is reported (default 5)")
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, 100000))
+      ->each([&o](const std::string&) { o.repetitions_given = true; });
   app.add_option("--json", o.json, "full report as JSON (- for stdout)")->type_name("FILE");
   app.add_option("--csv", o.csv, "one row per (mesh, method) as CSV (- for stdout)")->type_name("FILE");
   app.add_option("--cache", o.cache, "folder for exact distances, keyed by mesh content and source vertex")
@@ -39,10 +52,18 @@ void add_options(CLI::App& app, Options& o) {
   cli::add_load_options(app, o.load);
 }
 
-Settings check_options(const Options& o, bool stats_to_stdout) {
+Settings check_options(Options& o, bool stats_to_stdout) {
   Settings s;
+  if (o.corpus) {
+    if (o.shard != "0/1") throw cli::UsageError("--shard does not apply to --corpus (run folders separately)");
+    if (!o.methods_given && o.domain == "mesh") o.methods = corpus_method_list();
+    if (!o.sources_given) o.sources = kCorpusSources;
+    if (!o.repetitions_given) o.repetitions = kCorpusRepetitions;
+  } else if (!o.categories.empty()) {
+    throw cli::UsageError("--categories needs --corpus");
+  }
   // --domain points changes the default list only; an explicit --methods is taken as given.
-  const bool default_list = o.methods == default_method_list();
+  const bool default_list = !o.methods_given;
   s.methods = parse_methods(o.domain == "points" && default_list ? points_method_list() : o.methods);
   s.shard = parse_shard(o.shard);
   const int on_stdout = int(o.json == "-") + int(o.csv == "-") + int(stats_to_stdout);

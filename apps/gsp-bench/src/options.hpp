@@ -30,17 +30,25 @@ struct Options {
   unsigned neighbours = 10;        // k of the point-cloud methods' k-NN graph
   int subdivide = 0;               // rounds of Loop subdivision applied to every mesh
   cli::LoadOptions load;
+  bool corpus = false;             // --corpus: MESH... are folders or files, one row per mesh
+  std::string categories;          // --corpus: a SOURCES.md-like file for all meshes
+  // Given on the command line: corpus mode has its own defaults, which a given flag overrides.
+  bool methods_given = false, sources_given = false, repetitions_given = false;
 };
+
+// The corpus-mode defaults (the figures of a corpus evaluation: GSP, both baselines, exact).
+inline const char* corpus_method_list() { return "gsp,dijkstra,heat,exact"; }
+constexpr int kCorpusSources = 3, kCorpusRepetitions = 1;
 
 void add_options(CLI::App& app, Options& options);
 
 // The checked settings (UsageError for unknown methods, a malformed shard, two outputs on
-// stdout).
+// stdout, --shard or --categories without --corpus' consent). Applies the corpus defaults.
 struct Settings {
   std::vector<MethodInfo> methods;
   Shard shard;
   bool table = true;   // the human-readable table on stdout
 };
-Settings check_options(const Options& options, bool stats_to_stdout);
+Settings check_options(Options& options, bool stats_to_stdout);
 
 }  // namespace gsp::bench

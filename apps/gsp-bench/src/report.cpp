@@ -1,5 +1,7 @@
 #include "report.hpp"
 
+#include "format.hpp"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -38,20 +40,12 @@ std::string hex(std::uint64_t h) {
   return buf;
 }
 
-cli::Json number_or_null(double d) { return std::isfinite(d) ? cli::Json(d) : cli::Json(); }
-
-// CSV field: numbers with enough digits to read back; text quoted when it has to be (RFC 4180).
-std::string field(double d) {
-  if (!std::isfinite(d)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", d);
-  return buf;
-}
-std::string field(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
+// The bound columns; empty where no distances were checked (a skipped method).
+std::string bound_fields(const Summary& s) {
+  if (!s.bound_sources) return ",,,,,";
+  const BoundStats& b = s.bounds;
+  return field(b.below_line) + "," + std::to_string(b.below_count) + "," + field(b.above_edge) + "," +
+         std::to_string(b.above_count) + "," + std::to_string(b.unreached) + "," + std::to_string(b.nan);
 }
 
 }  // namespace
@@ -76,6 +70,7 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
       const double faces = r.stats.faces_reached ? double(r.stats.faces_reached) : nf;
       if (faces > 0) steps += double(r.stats.update_steps) / faces, ++stats_sources;
     }
+    if (r.has_bounds) s.bounds = worst_of(s.bounds, r.bounds), ++s.bound_sources;
     if (r.has_errors) {
       mre += r.errors.mre, signed_re += r.errors.signed_re, max_re = std::max(max_re, r.errors.max_re), ++s.error_sources;
       s.unreached += r.errors.unreached;
@@ -94,6 +89,18 @@ Summary summarise(const MeshRun& run, const MethodRun& m) {
   s.vs_heat_idt = ratio_to(run, Method::heat_idt, s.query_s);
   s.vs_gsp = ratio_to(run, Method::gsp, s.query_s);
   return s;
+}
+
+cli::Json bounds_json(const BoundStats& b) {
+  cli::Json j;
+  j["below_line"] = b.below_line;
+  j["below_line_count"] = b.below_count;
+  j["above_edge"] = b.above_edge;
+  j["above_edge_count"] = b.above_count;
+  j["edge_unreached"] = b.unreached;
+  j["nan"] = b.nan;
+  j["violated"] = violates(b);
+  return j;
 }
 
 cli::Json to_json(const Report& report) {
@@ -143,6 +150,7 @@ cli::Json to_json(const Report& report) {
       j["vs_heat"] = number_or_null(s.vs_heat);
       j["vs_heat_idt"] = number_or_null(s.vs_heat_idt);
       j["vs_gsp"] = number_or_null(s.vs_gsp);
+      j["bounds"] = s.bound_sources ? bounds_json(s.bounds) : cli::Json();
       if (is_gsp(m.method.id) && m.ok()) j["intrinsic_flips"] = m.intrinsic_flips;
       if ((m.method.id == Method::gsp_2threads || m.method.id == Method::gsp_4threads) && m.ok()) {
         // The parallel propagation against one thread: the speed-up, and the time beyond
@@ -180,6 +188,7 @@ cli::Json to_json(const Report& report) {
           sj["enqueued"] = r.stats.enqueued;
           sj["faces_reached"] = r.stats.faces_reached;
         }
+        if (r.has_bounds) sj["bounds"] = bounds_json(r.bounds);
         if (r.has_errors) {
           sj["mre"] = r.errors.mre;
           sj["max_re"] = r.errors.max_re;
@@ -198,7 +207,8 @@ cli::Json to_json(const Report& report) {
 std::string csv_header() {
   return "mesh,vertices,faces,method,status,sources,repetitions,precompute_s,query_s,vertices_per_s,"
          "cycles_per_vertex,update_steps_per_triangle,mre,max_re,unreached,state_bytes_per_vertex,"
-         "solver_bytes_per_vertex,vs_dijkstra,vs_heat,vs_heat_idt,vs_gsp,exact_cached,clock\n";
+         "solver_bytes_per_vertex,vs_dijkstra,vs_heat,vs_heat_idt,vs_gsp,exact_cached,clock,below_line,"
+         "below_line_count,above_edge,above_edge_count,edge_unreached,nan_count\n";
 }
 
 std::string to_csv(const Report& report) {
@@ -216,7 +226,7 @@ std::string to_csv(const Report& report) {
              field(s.update_steps_per_triangle) + "," + field(s.mre) + "," + field(s.max_re) + "," +
              std::to_string(s.unreached) + "," + field(s.state_bytes_per_vertex) + "," +
              field(s.solver_bytes_per_vertex) + "," + field(s.vs_dijkstra) + "," + field(s.vs_heat) + "," +
-             field(s.vs_heat_idt) + "," + field(s.vs_gsp) + "," + std::to_string(cached) + "," + report.clock + "\n";
+             field(s.vs_heat_idt) + "," + field(s.vs_gsp) + "," + std::to_string(cached) + "," + report.clock + "," + bound_fields(s) + "\n";
     }
   return out;
 }

@@ -25,7 +25,11 @@ struct Summary {
   double vs_dijkstra, vs_heat, vs_heat_idt, vs_gsp;   // query_s / the other method's query_s
   std::size_t timed_sources;
   std::size_t error_sources;
+  BoundStats bounds;                 // physical bounds, the worst over sources (bounds.hpp)
+  std::size_t bound_sources;         // sources whose distances were checked (0: bounds n/a)
 };
+
+cli::Json bounds_json(const BoundStats& b);
 
 Summary summarise(const MeshRun& run, const MethodRun& method);
 

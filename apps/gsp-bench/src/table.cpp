@@ -1,5 +1,7 @@
 #include "table.hpp"
 
+#include "format.hpp"
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -16,18 +18,6 @@ void appendf(std::string& out, const char* format, ...) {
   std::vsnprintf(buf, sizeof buf, format, args);
   va_end(args);
   out += buf;
-}
-
-// A number right-aligned in `width`, "-" when it does not apply.
-std::string cell(double v, int width, const char* format) {
-  char buf[64];
-  if (!std::isfinite(v)) std::snprintf(buf, sizeof buf, "%*s", width, "-");
-  else {
-    char num[48];
-    std::snprintf(num, sizeof num, format, v);
-    std::snprintf(buf, sizeof buf, "%*s", width, num);
-  }
-  return buf;
 }
 
 double time_of(const MeshRun& run, Method id) {
@@ -65,6 +55,15 @@ std::string points_section(const Report& report) {
   return out + "\n";
 }
 
+// The physical bounds (bounds.hpp): how far below the straight line and above the edge path
+// the worst vertex is, in %, and how many vertices break a bound by more than 1% or are NaN.
+std::string bound_cells(const Summary& s) {
+  const bool on = s.bound_sources > 0;
+  const double bad = double(s.bounds.below_count + s.bounds.above_count + s.bounds.nan);
+  return cell(on ? 100 * s.bounds.below_line : NAN, 8, "%.4f") + " " +
+         cell(on ? 100 * s.bounds.above_edge : NAN, 8, "%.4f") + " " + cell(on ? bad : NAN, 6, "%.0f");
+}
+
 struct GeoMean {
   double log_sum = 0;
   int n = 0;
@@ -83,9 +82,9 @@ std::string format_table(const Report& report) {
     appendf(out, "%s: %zu vertices, %zu faces, %zu sources, exact references %zu (%zu from cache)\n",
             m.name.c_str(), m.mesh.num_vertices(), m.mesh.num_faces(), run.sources.size(), run.exact_references,
             run.exact_cached);
-    appendf(out, "  %-18s %10s %10s %9s %9s %9s %8s %8s %9s %8s %8s %8s %8s\n", "method", "precomp_s", "query_ms",
+    appendf(out, "  %-18s %10s %10s %9s %9s %9s %8s %8s %9s %8s %8s %8s %8s %8s %8s %6s\n", "method", "precomp_s", "query_ms",
             "Mvert/s", "cyc/vert", "steps/tri", "MRE_%", "maxRE_%", "state_B/v", "heap_B/v", "x_dijk", "x_heat",
-            "x_gsp");
+            "x_gsp", "<line_%", ">edge_%", "bad");
     for (const MethodRun& mr : run.methods) {
       if (!mr.ok()) {
         appendf(out, "  %-18s skipped (see the note below)\n", mr.method.name);
@@ -99,7 +98,7 @@ std::string format_table(const Report& report) {
              cell(s.update_steps_per_triangle, 9, "%.3f") + " " + cell(s.mre * 100, 8, "%.4f") + " " +
              cell(s.max_re * 100, 8, "%.3f") + " " + cell(s.state_bytes_per_vertex, 9, "%.1f") + " " +
              cell(s.solver_bytes_per_vertex, 8, "%.0f") + " " + cell(s.vs_dijkstra, 8, "%.3f") + " " +
-             cell(s.vs_heat, 8, "%.3f") + " " + cell(s.vs_gsp, 8, "%.3f") + "\n";
+             cell(s.vs_heat, 8, "%.3f") + " " + cell(s.vs_gsp, 8, "%.3f") + " " + bound_cells(s) + "\n";
     }
     for (const std::string& note : run.notes) appendf(out, "  note: %s\n", note.c_str());
     out += "\n";
