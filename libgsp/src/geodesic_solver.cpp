@@ -268,10 +268,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<Real> vmin(nv, inf);
   std::vector<Index> vlabel(nv, kInvalidIndex);
   std::size_t faces_reached = 0;
-  // Lowers vmin to the faces' corner values (never raises: later rounds keep what relaxation
-  // found).
-  auto gather = [&] {
-    faces_reached = 0;
+  {
     constexpr std::size_t kBlock = 256;
     Real corner[3 * kBlock];
     for (std::size_t begin = 0; begin < nf; begin += kBlock) {
@@ -290,8 +287,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
         }
       }
     }
-  };
-  gather();
+  }
   // A targeted run stops once its targets are final: a resumed propagation would not.
   const bool relax = !goal && options.vertex_relaxation;
   if (relax) {
@@ -299,7 +295,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     for (const VertexSeed& vs : vertex_seeds)
       if (Real(vs.value * scale) < vmin[vs.vertex])
         vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
-    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, gather);
+    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats);
   }
   result.stats.faces_reached = faces_reached;
   // A vertex source's own value is exact and wins ties against the faces; of several sources

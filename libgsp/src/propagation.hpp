@@ -55,7 +55,10 @@ class UpdateStep {
 
   // Bounded queries collect the faces they reach for the first time (to list and reset them
   // without scanning the mesh); one predictable branch per accepted update.
-  void collect_reached(std::vector<Index>* faces) { reached_ = faces; }
+  // every_update: every accepted update instead (a face may be listed more than once).
+  void collect_reached(std::vector<Index>* faces, bool every_update = false) {
+    reached_ = faces, every_update_ = every_update;
+  }
 
   bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
@@ -213,7 +216,7 @@ class UpdateStep {
     // between faces forever.
     if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) return;
     ++stats_.face_updates;
-    if (reached_ && t.dT == std::numeric_limits<Real>::infinity()) reached_->push_back(face_of(g));
+    if (reached_ && (every_update_ || t.dT == std::numeric_limits<Real>::infinity())) reached_->push_back(face_of(g));
     if (cj == 0 && e1 > 0)
       t.sx = ex, t.sy = ey;   // halfedge 0's edge frame is the canonical frame
     else
@@ -281,6 +284,7 @@ class UpdateStep {
   ProbeTable<Real> probe_;
   Real limit_;
   std::vector<Index>* reached_ = nullptr;
+  bool every_update_ = false;
   Index own_begin_ = 0, own_end_ = 0, own_chunk_ = 1;
   std::vector<std::vector<RemoteStep<Real>>>* outbox_ = nullptr;
   PropagationStats& stats_;

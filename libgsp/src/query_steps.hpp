@@ -113,13 +113,13 @@ template <class Real>
 void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                                      std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal,
                                      PropagationStats& stats, std::vector<Index>* seeded,
-                                     std::vector<Index>* reached) const {
+                                     std::vector<Index>* reached, bool every_update) const {
   const std::vector<double>& length = tri.length;
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
   detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
-  step.collect_reached(reached);
+  step.collect_reached(reached, every_update);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   const unsigned threads = goal || reached ? 1 : propagation_threads(options, mesh.num_faces(), queue.size());
   const bool parallel = threads > 1 && !goal && !reached &&
@@ -205,35 +205,48 @@ inline constexpr int kMaxRelaxationRounds = 32;
 // (CAD parts, poles, soups): there a new round pays (docs/gsp-core.md, measurements).
 inline constexpr double kPseudoSourceGain = 1e-2;
 
-template <class Real, class Gather>
+template <class Real>
 void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const GeodesicOptions& options,
                                           FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
-                                          std::vector<Real>& vmin, std::vector<Index>& vlabel, PropagationStats& stats,
-                                          Gather&& gather) const {
+                                          std::vector<Real>& vmin, std::vector<Index>& vlabel,
+                                          PropagationStats& stats) const {
   const double scale = 1.0 / mean_edge;
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale)
                                                          : std::numeric_limits<Real>::infinity();
+  std::vector<Index> changed_faces, changed_vertices;
+  const std::vector<Index>* from = nullptr;   // the first round looks at every edge
   for (int round = 0;; ++round) {
     std::size_t relaxed = 0;
-    const std::vector<Index> lowered =
-        detail::relax_along_edges<Real>(input.triangles, input.length, scale, skipped_face, input.corner_begin,
-                                        input.corners, limit, Real(kPseudoSourceGain), vmin, vlabel, relaxed);
+    const std::vector<Index> lowered = detail::relax_along_edges<Real>(
+        input.triangles, input.length, scale, skipped_face, input.corner_begin, input.corners, from, limit,
+        Real(kPseudoSourceGain), vmin, vlabel, relaxed);
     stats.relaxed_vertices += relaxed;
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
     ++stats.relaxation_rounds;
     stats.pseudo_sources += lowered.size();
     queue.clear();
+    changed_faces.clear();
     for (Index v : lowered)
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
         const Index c = tri.corners[k];
         const Index f = face_of(c);
         if (skipped_face[f]) continue;
-        if (seed_face(tri.length, f, kCornerWeights[corner_of(c)], scale, double(vmin[v]), vlabel[v], state))
+        if (seed_face(tri.length, f, kCornerWeights[corner_of(c)], scale, double(vmin[v]), vlabel[v], state)) {
           queue.push_back({next_halfedge(c), state[f].dT});
+          changed_faces.push_back(f);
+        }
       }
     if (queue.empty()) return;
-    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, nullptr);
-    gather();
+    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
+    // The changed faces' corners, and the vertices they lower: where the next round starts.
+    changed_vertices.clear();
+    for (Index f : changed_faces)
+      for (Index i = 0; i < 3; ++i) {
+        const Index v = tri.triangles[f][i];
+        const Real d = corner_distance(state[f], i);
+        if (d < vmin[v]) vmin[v] = d, vlabel[v] = state[f].source(), changed_vertices.push_back(v);
+      }
+    from = &changed_vertices;
   }
 }
 

@@ -163,17 +163,18 @@ struct GeodesicSolver::Impl {
   void seed(const Triangulation& tri, const std::vector<Source>& sources, FaceRecord<Real>* state,
             std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
             detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const;
-  // After the first propagation: vertices lowered along the input's edges seed their fans as
-  // pseudo-sources and the propagation resumes, until no edge lowers a vertex
-  // (vertex_relaxation.hpp). gather() folds the faces' corner values into vmin again.
-  template <class Real, class Gather>
+  // After the first propagation and gather: vertices lowered along the input's edges seed their
+  // fans as pseudo-sources and the propagation resumes, until no edge lowers a vertex by more
+  // than kPseudoSourceGain (vertex_relaxation.hpp). Later rounds look only at the faces the
+  // resumed propagation changed and the edges at their corners.
+  template <class Real>
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                      PropagationStats& stats, Gather&& gather) const;
+                      PropagationStats& stats) const;
   template <class Real>
   void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,
-                 std::vector<Index>* seeded, std::vector<Index>* reached) const;
+                 std::vector<Index>* seeded, std::vector<Index>* reached, bool every_update = false) const;
 };
 
 // Seeds face f with a source at barycentric point b of the face (canonical coordinates are

