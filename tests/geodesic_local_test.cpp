@@ -4,6 +4,7 @@
 #include "helpers/geodesic_fixtures.hpp"
 
 #include <gsp/errors.hpp>
+#include <gsp/dijkstra.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
 
@@ -25,9 +26,13 @@ void expect_same(const GeodesicSolver& solver, LocalWorkspace& ws, const std::ve
                  const GeodesicOptions& o) {
   GeodesicOptions full_options = o;
   full_options.want_face_sources = true;   // forces the input faces in compute()
-  full_options.vertex_relaxation = false;  // bounded queries do not relax (yet)
+  // The propagation alone: the relaxation runs in model units in a bounded query (the same
+  // bounds, other rounding), see RelaxedWithinTheRadius.
+  full_options.vertex_relaxation = false;
+  GeodesicOptions local_options = o;
+  local_options.vertex_relaxation = false;
   const GeodesicResult full = solver.compute(sources, full_options);
-  const LocalField local = solver.compute_local(sources, o, ws);
+  const LocalField local = solver.compute_local(sources, local_options, ws);
   std::size_t within = 0;
   for (double d : full.vertex_distance) within += std::isfinite(d);
   ASSERT_EQ(local.vertices.size(), within);
@@ -71,6 +76,31 @@ TEST(LocalQuery, SameNumbersAsComputeWithinTheRadius) {
     const Index v = Index(rng.next() % m.num_vertices());
     expect_same(solver, ws, {Source::in_face(f, {0.2, 0.5, 0.3})}, o);
     expect_same(solver, ws, {Source::in_face(f, {0.6, 0.2, 0.2}), Source::at_vertex(v, 0.01 * r)}, o);
+  }
+}
+
+// With the vertex relaxation (the default) a bounded query is never above the edge path either,
+// and never above its own unrelaxed values.
+TEST(LocalQuery, RelaxedWithinTheRadius) {
+  const TriangleMesh m = fertility();
+  const GeodesicSolver solver(m);
+  const DijkstraSolver edges(m);
+  LocalWorkspace ws = solver.make_workspace();
+  GeodesicOptions o, plain;
+  o.max_distance = plain.max_distance = 0.1 * bbox_diagonal(m);
+  plain.vertex_relaxation = false;
+  for (Index v : {Index(0), Index(1234), Index(4000)}) {
+    const std::vector<double> edge = edges.compute({Source::at_vertex(v)}).vertex_distance;
+    const LocalField relaxed = solver.compute_local({Source::at_vertex(v)}, o, ws);
+    const LocalField alone = solver.compute_local({Source::at_vertex(v)}, plain, ws);
+    std::vector<double> before(m.num_vertices(), std::numeric_limits<double>::infinity());
+    for (std::size_t k = 0; k < alone.vertices.size(); ++k) before[alone.vertices[k]] = alone.vertex_distance[k];
+    ASSERT_GE(relaxed.vertices.size(), alone.vertices.size());
+    for (std::size_t k = 0; k < relaxed.vertices.size(); ++k) {
+      const Index u = relaxed.vertices[k];
+      EXPECT_LE(relaxed.vertex_distance[k], edge[u] * (1 + 1e-6)) << "vertex " << u;
+      EXPECT_LE(relaxed.vertex_distance[k], before[u]) << "vertex " << u;
+    }
   }
 }
 

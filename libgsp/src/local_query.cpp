@@ -4,6 +4,7 @@
 // so nothing scans the whole mesh.
 #include "query_steps.hpp"
 #include "solver_impl.hpp"
+#include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
 #include <gsp/errors.hpp>
@@ -57,6 +58,51 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
   if (resolved_precision(options.precision, /*input_faces=*/true) == Precision::single)
     return impl_->run_local<float>(sources, options, workspace);
   return impl_->run_local<double>(sources, options, workspace);
+}
+
+template <class Real>
+void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecord<Real>* state,
+                                       std::vector<QueueEntry<Real>>& queue, LocalValues values,
+                                       PropagationStats& stats) const {
+  const double scale = 1.0 / mean_edge;
+  std::vector<Index> changed_faces, from = values.vertices;
+  for (int round = 0;; ++round) {
+    std::size_t relaxed = 0;
+    const std::vector<Index> lowered = detail::relax_along_edges<double>(
+        input.triangles, input.length, 1.0, skipped_face, input.corner_begin, input.corners, &from,
+        options.max_distance, kPseudoSourceGain, values.vdist, values.vlabel, relaxed, &values.vertices);
+    stats.relaxed_vertices += relaxed;
+    if (lowered.empty() || round >= kMaxRelaxationRounds) return;
+    ++stats.relaxation_rounds;
+    stats.pseudo_sources += lowered.size();
+    queue.clear();
+    changed_faces.clear();
+    for (Index v : lowered)
+      for (Index k = input.corner_begin[v]; k < input.corner_begin[v + 1]; ++k) {
+        const Index c = input.corners[k];
+        const Index f = face_of(c);
+        if (skipped_face[f]) continue;
+        values.seeded.push_back(f);   // reset after the query, whether or not it takes the seed
+        if (seed_face(input.length, f, kCornerWeights[corner_of(c)], scale, values.vdist[v] * scale, values.vlabel[v],
+                      state)) {
+          queue.push_back({next_halfedge(c), state[f].dT});
+          changed_faces.push_back(f);
+        }
+      }
+    if (queue.empty()) return;
+    propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
+    from.clear();
+    for (Index f : changed_faces) {
+      if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
+      for (Index i = 0; i < 3; ++i) {
+        const Index v = input.triangles[f][i];
+        const double d = double(corner_distance(state[f], i)) * mean_edge;
+        if (!(d < values.vdist[v])) continue;
+        if (values.vdist[v] == std::numeric_limits<double>::infinity()) values.vertices.push_back(v);
+        values.vdist[v] = d, values.vlabel[v] = state[f].source(), from.push_back(v);
+      }
+    }
+  }
 }
 
 template <class Real>
@@ -117,6 +163,9 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
     const Triangle& t = tri.triangles[f];
     for (Index i = 0; i < 3; ++i) touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
   }
+  if (options.vertex_relaxation)
+    relax_local<Real>(options, buf.state.data(), buf.queue,
+                      {ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded}, result.stats);
   result.stats.faces_reached = ws.faces.size();
 
   const double cutoff = options.max_distance;

@@ -171,6 +171,19 @@ struct GeodesicSolver::Impl {
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
                       PropagationStats& stats) const;
+  // The same for a bounded query (local_query.cpp), in model units on the workspace's vertex
+  // values: starts from the vertices the query reached, lists every vertex and face it adds.
+  struct LocalValues {
+    std::vector<double>& vdist;
+    std::vector<Index>& vlabel;
+    std::vector<Index>& vertices;       // vertices with a value (to report and reset)
+    std::vector<Index>& faces;          // faces reached (to report and reset)
+    std::vector<std::uint8_t>& face_mark;
+    std::vector<Index>& seeded;         // faces to reset
+  };
+  template <class Real>
+  void relax_local(const GeodesicOptions& options, FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
+                   LocalValues values, PropagationStats& stats) const;
   template <class Real>
   void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,

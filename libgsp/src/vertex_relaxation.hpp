@@ -30,13 +30,14 @@ namespace gsp::detail {
 // (from == nullptr) or from the edges at the vertices `from` lists, never past `limit`. Labels
 // follow the value. Returns the vertices lowered by more than the relative `gain` (each once):
 // those worth a new propagation round; the others keep their new value only. `relaxed` counts
-// every lowering.
+// every lowering; `reached`, when given, gets every vertex that had no value before.
 template <class Real>
 std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, const std::vector<double>& length,
                                      double scale, const std::vector<bool>& skipped_face,
                                      const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
                                      const std::vector<Index>* from, Real limit, Real gain, std::vector<Real>& d,
-                                     std::vector<Index>& label, std::size_t& relaxed) {
+                                     std::vector<Index>& label, std::size_t& relaxed,
+                                     std::vector<Index>* reached = nullptr) {
   // A clearly shorter value only: rounding must not make two vertices lower each other forever.
   constexpr Real kMargin = 1 - 8 * std::numeric_limits<Real>::epsilon();
   using Item = std::pair<Real, Index>;
@@ -46,6 +47,7 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
     const Real candidate = d[a] + len;
     if (!(candidate < d[to] * kMargin) || !(candidate <= limit)) return;
     if (candidate < d[to] * (1 - gain)) lowered.push_back(to);
+    if (reached && d[to] == std::numeric_limits<Real>::infinity()) reached->push_back(to);
     ++relaxed;
     d[to] = candidate;
     label[to] = label[a];

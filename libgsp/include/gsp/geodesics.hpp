@@ -93,8 +93,8 @@ struct GeodesicOptions {
   // Vertices as pseudo-sources (docs/gsp-core.md): after the propagation, vertex distances are
   // relaxed along the input's edges, and vertices lowered by more than 1% seed their fans for
   // another round, so no vertex ends farther than the shortest path along the mesh edges. Off:
-  // the paper's per-face virtual sources alone. Full queries without targets only: bounded
-  // queries (compute_local) and targeted runs (A*) do not relax yet.
+  // the paper's per-face virtual sources alone. Full and bounded (compute_local) queries; runs
+  // with targets (A*) do not relax: they stop as soon as the targets are final.
   bool vertex_relaxation = true;
 };
 
