@@ -75,20 +75,8 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
     ++stats.relaxation_rounds;
     stats.pseudo_sources += lowered.size();
-    queue.clear();
-    changed_faces.clear();
-    for (Index v : lowered)
-      for (Index k = input.corner_begin[v]; k < input.corner_begin[v + 1]; ++k) {
-        const Index c = input.corners[k];
-        const Index f = face_of(c);
-        if (skipped_face[f]) continue;
-        values.seeded.push_back(f);   // reset after the query, whether or not it takes the seed
-        if (seed_face(input.length, f, kCornerWeights[corner_of(c)], scale, values.vdist[v] * scale, values.vlabel[v],
-                      state)) {
-          queue.push_back({next_halfedge(c), state[f].dT});
-          changed_faces.push_back(f);
-        }
-      }
+    // Every face offered a seed is reset after the query, whether or not it took it.
+    seed_pseudo_sources(input, lowered, values.vdist, scale, values.vlabel, state, queue, changed_faces, &values.seeded);
     if (queue.empty()) return;
     propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
     from.clear();

@@ -205,6 +205,29 @@ inline constexpr int kMaxRelaxationRounds = 32;
 // (CAD parts, poles, soups): there a new round pays (docs/gsp-core.md, measurements).
 inline constexpr double kPseudoSourceGain = 1e-2;
 
+template <class Real, class Value>
+void GeodesicSolver::Impl::seed_pseudo_sources(const Triangulation& tri, const std::vector<Index>& vertices,
+                                               const std::vector<Value>& d, double to_normalised,
+                                               const std::vector<Index>& label, FaceRecord<Real>* state,
+                                               std::vector<QueueEntry<Real>>& queue, std::vector<Index>& changed,
+                                               std::vector<Index>* touched) const {
+  const double scale = 1.0 / mean_edge;
+  queue.clear();
+  changed.clear();
+  for (Index v : vertices)
+    for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+      const Index c = tri.corners[k];
+      const Index f = face_of(c);
+      if (skipped_face[f]) continue;
+      if (touched) touched->push_back(f);
+      if (seed_face(tri.length, f, kCornerWeights[corner_of(c)], scale, double(d[v]) * to_normalised, label[v],
+                    state)) {
+        queue.push_back({next_halfedge(c), state[f].dT});
+        changed.push_back(f);
+      }
+    }
+}
+
 template <class Real>
 void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const GeodesicOptions& options,
                                           FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
@@ -224,18 +247,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
     ++stats.relaxation_rounds;
     stats.pseudo_sources += lowered.size();
-    queue.clear();
-    changed_faces.clear();
-    for (Index v : lowered)
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const Index f = face_of(c);
-        if (skipped_face[f]) continue;
-        if (seed_face(tri.length, f, kCornerWeights[corner_of(c)], scale, double(vmin[v]), vlabel[v], state)) {
-          queue.push_back({next_halfedge(c), state[f].dT});
-          changed_faces.push_back(f);
-        }
-      }
+    seed_pseudo_sources(tri, lowered, vmin, 1.0, vlabel, state, queue, changed_faces, nullptr);
     if (queue.empty()) return;
     propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
     // The changed faces' corners, and the vertices they lower: where the next round starts.

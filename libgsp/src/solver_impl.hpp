@@ -171,6 +171,14 @@ struct GeodesicSolver::Impl {
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
                       PropagationStats& stats) const;
+  // Seeds the fans of `vertices` with a virtual source at the vertex, sigma = d[v] *
+  // to_normalised; the faces that took it go to `changed` (and the queue), every face offered
+  // one to `touched` when given.
+  template <class Real, class Value>
+  void seed_pseudo_sources(const Triangulation& tri, const std::vector<Index>& vertices, const std::vector<Value>& d,
+                           double to_normalised, const std::vector<Index>& label, FaceRecord<Real>* state,
+                           std::vector<QueueEntry<Real>>& queue, std::vector<Index>& changed,
+                           std::vector<Index>* touched) const;
   // The same for a bounded query (local_query.cpp), in model units on the workspace's vertex
   // values: starts from the vertices the query reached, lists every vertex and face it adds.
   struct LocalValues {
