@@ -296,6 +296,26 @@ TEST(BenchApp, SubdivideBuildsLargerCurvedMeshes) {
   EXPECT_NE(bad.err.find("not manifold"), std::string::npos) << bad.err;
 }
 
+TEST(BenchApp, MidpointSubdivisionKeepsTheSurface) {
+  // Midpoint splits: a vertex per edge, 4x the faces, nothing moved (a tetrahedron stays a
+  // tetrahedron: every new vertex on an old face), and a non-manifold soup is fine.
+  ScratchDir dir("bench");
+  gsp::test::write_file(dir / "tet.off", kTetrahedron);
+  const auto r = run_bench(quote((dir / "tet.off").string()) + " --subdivide 2 --subdivision midpoint --sources 1 " +
+                               "--repetitions 1 --methods gsp,dijkstra",
+                           dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("tet.off@mid2: 34 vertices, 64 faces"), std::string::npos) << r.out;
+  gsp::test::write_file(dir / "nm.off", kNonManifold);
+  const auto nm = run_bench(quote((dir / "nm.off").string()) + " --subdivide 1 --subdivision midpoint --sources 1 " +
+                                "--repetitions 1 --methods gsp",
+                            dir);
+  EXPECT_EQ(nm.exit_code, 0) << nm.err;
+  EXPECT_NE(nm.out.find("nm.off@mid1"), std::string::npos) << nm.out;
+  const auto bad = run_bench(quote((dir / "tet.off").string()) + " --subdivision cubic", dir);
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+}
+
 TEST(BenchApp, BadInputExitsOne) {
   ScratchDir dir("bench");
   gsp::test::write_file(dir / "broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n");

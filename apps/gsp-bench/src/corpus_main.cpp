@@ -27,6 +27,7 @@ cli::Json corpus_settings(const Options& o, const Settings& s) {
   j["clock"] = o.clock;
   j["domain"] = o.domain;
   j["subdivide"] = o.subdivide;
+  j["subdivision"] = o.subdivision;
   j["cache"] = o.cache.empty() ? cli::Json() : cli::Json(o.cache);
   return j;
 }
@@ -71,7 +72,7 @@ void run_corpus(cli::Context& ctx, const Options& o, const Settings& settings) {
       try {
         cli::LoadOptions load = o.load;
         load.require_faces = false;   // a point cloud is skipped, not failed
-        const BenchMesh mesh = load_bench_mesh(path, load, o.sources, o.seed, o.subdivide);
+        const BenchMesh mesh = load_bench_mesh(path, load, o.sources, o.seed, o.subdivide, o.subdivision == "midpoint");
         vertices = mesh.mesh.num_vertices(), faces = mesh.mesh.num_faces();
         if (faces == 0) {
           report.point_clouds.push_back(path);

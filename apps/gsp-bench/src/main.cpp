@@ -38,6 +38,8 @@ cli::Json settings_json(const Options& o, const Settings& s) {
   j["clock"] = o.clock;
   j["domain"] = o.domain;
   j["neighbours"] = o.neighbours;
+  j["subdivide"] = o.subdivide;
+  j["subdivision"] = o.subdivision;
   j["warm_up_runs"] = 1;
   j["shard"] = std::to_string(s.shard.index) + "/" + std::to_string(s.shard.count);
   j["cache"] = o.cache.empty() ? cli::Json() : cli::Json(o.cache);
@@ -61,7 +63,7 @@ void run(cli::Context& ctx, Options& o) {
   std::vector<BenchMesh> meshes;
   for (const std::string& path : o.meshes) {
     ctx.set_input(path);
-    meshes.push_back(ctx.timer().time("read", [&] { return load_bench_mesh(path, o.load, o.sources, o.seed, o.subdivide); }));
+    meshes.push_back(ctx.timer().time("read", [&] { return load_bench_mesh(path, o.load, o.sources, o.seed, o.subdivide, o.subdivision == "midpoint"); }));
   }
 
   Report report;

@@ -47,6 +47,11 @@ void add_options(CLI::App& app, Options& o) {
                  "made from small meshes; the reports name them MESH@loopK")
       ->check(CLI::Range(0, 6))
       ->type_name("K");
+  app.add_option("--subdivision", o.subdivision,
+                 "how --subdivide splits: loop (default: every vertex moved, curved everywhere) or midpoint "
+                 "(4 faces per face, new vertices on the old faces: keeps needles and flat regions; MESH@midK; "
+                 "any soup)")
+      ->check(CLI::IsMember({"loop", "midpoint"}));
   app.add_option("--neighbours", o.neighbours, "k of the point-cloud methods' k-nearest-neighbour graph (default 10)")
       ->check(CLI::Range(1u, 1000u));
   cli::add_load_options(app, o.load);

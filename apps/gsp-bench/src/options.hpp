@@ -28,7 +28,8 @@ struct Options {
   bool no_table = false;
   std::string domain = "mesh";     // mesh | points: what --methods defaults to
   unsigned neighbours = 10;        // k of the point-cloud methods' k-NN graph
-  int subdivide = 0;               // rounds of Loop subdivision applied to every mesh
+  int subdivide = 0;               // rounds of subdivision applied to every mesh
+  std::string subdivision = "loop";   // loop | midpoint
   cli::LoadOptions load;
   bool corpus = false;             // --corpus: MESH... are folders or files, one row per mesh
   std::string categories;          // --corpus: a SOURCES.md-like file for all meshes

@@ -31,15 +31,15 @@ std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64
 }
 
 BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed,
-                          int subdivide) {
+                          int subdivide, bool midpoint) {
   cli::LoadedMesh in = cli::load_mesh(path, load);
   BenchMesh m;
   m.path = path;
   m.name = std::filesystem::path(path).filename().string();
   m.mesh = std::move(in.mesh);
   if (subdivide > 0) {
-    m.mesh = loop_subdivide(m.mesh, subdivide);
-    m.name += "@loop" + std::to_string(subdivide);
+    m.mesh = midpoint ? midpoint_subdivide(m.mesh, subdivide) : loop_subdivide(m.mesh, subdivide);
+    m.name += (midpoint ? "@mid" : "@loop") + std::to_string(subdivide);
   }
   m.hash = train::mesh_hash(m.mesh);
   m.sources = pick_sources(m.mesh, sources, seed, m.hash);

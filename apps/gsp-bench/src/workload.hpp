@@ -26,9 +26,10 @@ struct BenchMesh {
 std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash);
 
 // Loads (gsp::cli::load_mesh; throws gsp::IoError for a bad file) and picks the sources.
-// `subdivide` > 0: Loop-subdivided that many times (subdivide.hpp), named "<file>@loop<K>".
+// `subdivide` > 0: Loop-subdivided that many times (subdivide.hpp), named "<file>@loop<K>",
+// or split at the edge midpoints with `midpoint`, named "<file>@mid<K>".
 BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed,
-                          int subdivide = 0);
+                          int subdivide = 0, bool midpoint = false);
 
 // --shard i/n: work items k with k % n == i.
 struct Shard {
