@@ -12,7 +12,7 @@
 namespace gsp::test {
 namespace {
 
-const Strategy kAllStrategies[] = {Strategy::speed_limiter, Strategy::static_postpone,
+const Strategy kAllStrategies[] = {Strategy::speed_limiter, Strategy::speed_limiter_postpone, Strategy::static_postpone,
                                    Strategy::dynamic_postpone, Strategy::hybrid_postpone,
                                    Strategy::bfs, Strategy::priority_queue};
 

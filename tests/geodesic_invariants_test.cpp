@@ -125,7 +125,7 @@ TEST(GeodesicInvariants, StrategiesAgree) {
   GeodesicOptions pq;
   pq.strategy = Strategy::priority_queue;
   const auto ref = solver.compute({Source::at_vertex(7)}, pq).vertex_distance;
-  for (Strategy s : {Strategy::speed_limiter, Strategy::static_postpone, Strategy::dynamic_postpone,
+  for (Strategy s : {Strategy::speed_limiter, Strategy::speed_limiter_postpone, Strategy::static_postpone, Strategy::dynamic_postpone,
                      Strategy::hybrid_postpone, Strategy::bfs}) {
     GeodesicOptions o;
     o.strategy = s;

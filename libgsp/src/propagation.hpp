@@ -302,26 +302,51 @@ Real min_key(const std::vector<QueueEntry<Real>>& q) {
 inline constexpr std::size_t kPrefetchDistance = 8;
 
 // Speed limiter with a lean queue: the current queue grows while it is walked; an improved
-// face stays in this round while its distance is below the round's limit.
+// face stays in this round while its distance is below the round's limit. With `postpone`,
+// an entry deferred to a later round that is still beyond that round's limit is deferred
+// again instead of expanded (Strategy::speed_limiter_postpone).
 template <class Real>
-void run_speed_limiter(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a, Real f,
-                       PropagationStats& stats) {
+void run_speed_limiter(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a, Real f, PropagationStats& stats,
+                       bool postpone = false) {
   std::vector<QueueEntry<Real>> b;
   b.reserve(a.capacity());
+  const Real inf = std::numeric_limits<Real>::infinity();
   Real limit = min_key(a) + f;
+  Real min_next = inf;   // the smallest distance deferred to the next round
   while (!a.empty()) {
     ++stats.iterations;
     for (std::size_t i = 0; i < a.size(); ++i) {
       const QueueEntry<Real> e = a[i];
       if (i + kPrefetchDistance < a.size()) step.prefetch(a[i + kPrefetchDistance]);
+      // Deferred from an earlier round and still beyond the limit: deferred again. Expanded
+      // anyway (the paper's rule), such entries form a second front that runs one ring per
+      // round ahead of the limit whatever f is, and every face it reaches is updated again
+      // when the true front comes (steps per face grew with the mesh: 4.6 at 1.6M vertices).
+      if (postpone && !(e.dT < limit)) {
+        if (step.is_stale(e)) {
+          ++stats.stale_skipped;
+          continue;
+        }
+        ++stats.postponed;
+        b.push_back(e);
+        min_next = std::min(min_next, e.dT);
+        continue;
+      }
       step.expand(e, [&](const QueueEntry<Real>& n) {
         ++stats.enqueued;
-        if (n.dT < limit) a.push_back(n); else b.push_back(n);
+        if (n.dT < limit) {
+          a.push_back(n);
+        } else {
+          b.push_back(n);
+          min_next = std::min(min_next, n.dT);
+        }
       });
     }
     a.clear();
     std::swap(a, b);
-    limit += f;
+    // Skips ahead where nothing lies in the next band (large gaps, source offsets).
+    limit = postpone ? std::max(limit, min_next) + f : limit + f;
+    min_next = inf;
   }
 }
 

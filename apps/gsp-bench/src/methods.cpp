@@ -16,6 +16,7 @@ const std::vector<MethodInfo>& all_methods() {
   static const std::vector<MethodInfo> methods = {
       {Method::gsp, "gsp", "GSP: optimised layout, speed limiter, automatic precision, vertex relaxation (the defaults)", true},
       {Method::gsp_pq, "gsp-pq", "GSP with a priority queue (Dijkstra order on d_T)", true},
+      {Method::gsp_sl_postpone, "gsp-sl-postpone", "GSP with the speed limiter that postpones entries still beyond its limit", false},
       {Method::gsp_bfs, "gsp-bfs", "GSP in topological (BFS) order", true},
       {Method::gsp_hybrid, "gsp-hybrid", "GSP with hybrid postpone (fat queue)", true},
       {Method::gsp_double, "gsp-double", "GSP with double-precision state", true},
@@ -199,6 +200,7 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::gsp_2threads: go.threads = 2; break;
     case Method::gsp_4threads: go.threads = 4; break;
     case Method::gsp_pq: go.strategy = Strategy::priority_queue; break;
+    case Method::gsp_sl_postpone: go.strategy = Strategy::speed_limiter_postpone; break;
     case Method::gsp_bfs: go.strategy = Strategy::bfs; break;
     case Method::gsp_hybrid: go.strategy = Strategy::hybrid_postpone; break;
     case Method::gsp_double: go.precision = Precision::double_precision; break;

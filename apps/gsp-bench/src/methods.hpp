@@ -16,6 +16,7 @@ namespace gsp::bench {
 enum class Method {
   gsp,                 // GSP as shipped: optimised layout, speed limiter, automatic precision
   gsp_pq,              // priority queue (Dijkstra order on d_T)
+  gsp_sl_postpone,     // the speed limiter that postpones entries still beyond its limit
   gsp_bfs,             // topological (BFS) order
   gsp_hybrid,          // hybrid postpone, fat queue
   gsp_double,          // double-precision state

@@ -38,7 +38,7 @@ void add_options(CLI::App& app, Options& o) {
                  "sources over the k-NN links instead of GSP on the local triangles)")
       ->check(CLI::IsMember({"gsp", "dijkstra", "graph-gsp"}));
   app.add_option("--strategy", o.strategy,
-                 "queue strategy: speed-limiter (default), static-postpone, dynamic-postpone, "
+                 "queue strategy: speed-limiter (default), speed-limiter-postpone, static-postpone, dynamic-postpone, "
                  "hybrid-postpone, bfs, priority-queue");
   app.add_option("--precision", o.precision,
                  "auto (default: double where a face is too thin for float lengths), single or double")
@@ -73,13 +73,14 @@ void add_options(CLI::App& app, Options& o) {
 
 Strategy parse_strategy(const std::string& name) {
   if (name == "speed-limiter") return Strategy::speed_limiter;
+  if (name == "speed-limiter-postpone") return Strategy::speed_limiter_postpone;
   if (name == "static-postpone") return Strategy::static_postpone;
   if (name == "dynamic-postpone") return Strategy::dynamic_postpone;
   if (name == "hybrid-postpone") return Strategy::hybrid_postpone;
   if (name == "bfs") return Strategy::bfs;
   if (name == "priority-queue") return Strategy::priority_queue;
   throw cli::UsageError("--strategy: \"" + name +
-                        "\" is not one of speed-limiter, static-postpone, dynamic-postpone, "
+                        "\" is not one of speed-limiter, speed-limiter-postpone, static-postpone, dynamic-postpone, "
                         "hybrid-postpone, bfs, priority-queue");
 }
 
