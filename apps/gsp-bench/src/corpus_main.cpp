@@ -40,13 +40,7 @@ void run_corpus(cli::Context& ctx, const Options& o, const Settings& settings) {
   const std::vector<std::string> files = corpus_files(o.meshes);
 
   const train::ExactCache cache(o.cache);
-  BenchConfig config;
-  config.methods = settings.methods;
-  config.repetitions = o.repetitions;
-  config.cpu_clock = o.clock == "cpu";
-  config.seed = o.seed;
-  config.neighbours = o.neighbours;
-  config.cache = &cache;
+  const BenchConfig config = bench_config(o, settings, cache);
 
   CorpusReport report;
   for (const MethodInfo& m : settings.methods) report.methods.push_back(m.name);

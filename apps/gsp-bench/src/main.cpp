@@ -76,13 +76,7 @@ void run(cli::Context& ctx, Options& o) {
   for (const BenchMesh& m : meshes) report.all_meshes.push_back(&m);
 
   const train::ExactCache cache(o.cache);
-  BenchConfig config;
-  config.methods = settings.methods;
-  config.repetitions = o.repetitions;
-  config.cpu_clock = o.clock == "cpu";
-  config.seed = o.seed;
-  config.neighbours = o.neighbours;
-  config.cache = &cache;
+  const BenchConfig config = bench_config(o, settings, cache);
 
   const auto progress = ctx.progress("benchmarking");
   const double total_steps = double(report.items.size() * settings.methods.size());

@@ -77,4 +77,15 @@ Settings check_options(Options& o, bool stats_to_stdout) {
   return s;
 }
 
+BenchConfig bench_config(const Options& o, const Settings& settings, const train::ExactCache& cache) {
+  BenchConfig config;
+  config.methods = settings.methods;
+  config.repetitions = o.repetitions;
+  config.cpu_clock = o.clock == "cpu";
+  config.seed = o.seed;
+  config.neighbours = o.neighbours;
+  config.cache = &cache;
+  return config;
+}
+
 }  // namespace gsp::bench

@@ -1,5 +1,6 @@
 #pragma once
 // What gsp-bench is asked to do, as parsed from the command line.
+#include "bench.hpp"
 #include "methods.hpp"
 #include "workload.hpp"
 
@@ -51,5 +52,8 @@ struct Settings {
   bool table = true;   // the human-readable table on stdout
 };
 Settings check_options(Options& options, bool stats_to_stdout);
+
+// The measuring loop's settings from the checked options (both modes, per-mesh and corpus).
+BenchConfig bench_config(const Options& options, const Settings& settings, const train::ExactCache& cache);
 
 }  // namespace gsp::bench
