@@ -98,6 +98,9 @@ TEST(BenchCorpus, BrokenFileIsAFailedRowAndTheRunGoesOn) {
   EXPECT_EQ(all["with_exact"].num, 1);
   EXPECT_EQ(all["gsp_worse_than_dijkstra"].num, 0);
   EXPECT_EQ(all["gsp_worse_than_heat"].num, 0);
+  // Per source: each source of the good mesh compared with Dijkstra, GSP better on each.
+  EXPECT_EQ(all["sources_compared_with_dijkstra"].num, good["sources"].num);
+  EXPECT_EQ(all["sources_gsp_worse_than_dijkstra"].num, 0);
   EXPECT_EQ(all["figures"]["gsp_mre"]["n"].num, 1);
   EXPECT_DOUBLE_EQ(all["figures"]["gsp_mre"]["median"].num, gsp["mre"].num);
   EXPECT_DOUBLE_EQ(all["figures"]["gsp_mre"]["worst"].num, gsp["mre"].num);

@@ -2,6 +2,7 @@
 
 #include "report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -48,6 +49,7 @@ CorpusRow corpus_row(const MeshRun& run, const std::string& category) {
     c.skipped = one_line(m.skipped);
     c.mre = s.mre, c.max_re = s.max_re, c.query_s = s.query_s;
     c.bounds = s.bounds, c.has_bounds = s.bound_sources > 0;
+    for (const SourceRun& sr : m.sources) c.source_mre.push_back(sr.has_errors ? sr.errors.mre : kNaN);
     if (m.method.id == Method::gsp) row.steps_per_face = s.update_steps_per_triangle;
     row.methods.push_back(std::move(c));
   }
@@ -74,6 +76,29 @@ int gsp_beats(const CorpusRow& row, const std::string& other) {
 bool gsp_worse(const CorpusRow& row, const std::string& other) {
   const double g = row.mre("gsp"), o = row.mre(other);
   return std::isfinite(g) && std::isfinite(o) && g > o + kMreTie;
+}
+
+namespace {
+// Calls visit(gsp_mre, other_mre) for each source both measured against exact.
+template <class Visit>
+void per_source(const CorpusRow& row, const std::string& other, Visit&& visit) {
+  const CorpusMethod *g = row.method("gsp"), *o = row.method(other);
+  if (!g || !o) return;
+  for (std::size_t k = 0; k < std::min(g->source_mre.size(), o->source_mre.size()); ++k)
+    if (std::isfinite(g->source_mre[k]) && std::isfinite(o->source_mre[k])) visit(g->source_mre[k], o->source_mre[k]);
+}
+}  // namespace
+
+std::size_t gsp_worse_sources(const CorpusRow& row, const std::string& other) {
+  std::size_t n = 0;
+  per_source(row, other, [&](double g, double o) { n += g > o + kMreTie; });
+  return n;
+}
+
+std::size_t compared_sources(const CorpusRow& row, const std::string& other) {
+  std::size_t n = 0;
+  per_source(row, other, [&](double, double) { ++n; });
+  return n;
 }
 
 bool gsp_violates(const CorpusRow& row) {

@@ -14,6 +14,7 @@ struct CorpusMethod {
   std::string skipped;       // why the method refused the mesh; empty when it ran
   double mre, max_re;        // against exact: mean over sources of the MRE, max; NaN without exact
   double query_s;            // median time per query; NaN when skipped
+  std::vector<double> source_mre;   // per source, in pick order; NaN where no exact reference
   BoundStats bounds;         // worst over sources (bounds.hpp)
   bool has_bounds = false;
 };
@@ -45,6 +46,10 @@ int gsp_beats(const CorpusRow& row, const std::string& other);
 // single-precision state leaves an MRE of ~1e-8: rounding, not a loss.
 constexpr double kMreTie = 1e-6;
 bool gsp_worse(const CorpusRow& row, const std::string& other);
+// The sources (with exact references for both) on which GSP's MRE is above the other's by
+// more than kMreTie: the "below Dijkstra and heat on every mesh and source".
+std::size_t gsp_worse_sources(const CorpusRow& row, const std::string& other);
+std::size_t compared_sources(const CorpusRow& row, const std::string& other);
 
 // GSP ran and broke a physical bound by more than 1%, or gave a NaN.
 bool gsp_violates(const CorpusRow& row);

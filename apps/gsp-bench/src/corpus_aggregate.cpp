@@ -77,6 +77,10 @@ std::vector<CategoryAggregate> aggregate(const std::vector<CorpusRow>& rows) {
       a.with_exact += r->exact_references > 0;
       a.gsp_worse_than_dijkstra += gsp_worse(*r, "dijkstra");
       a.gsp_worse_than_heat += gsp_worse(*r, "heat");
+      a.sources_worse_than_dijkstra += gsp_worse_sources(*r, "dijkstra");
+      a.sources_worse_than_heat += gsp_worse_sources(*r, "heat");
+      a.sources_vs_dijkstra += compared_sources(*r, "dijkstra");
+      a.sources_vs_heat += compared_sources(*r, "heat");
       a.violating_bounds += gsp_violates(*r);
     }
     for (const auto& [name, figure] : figures()) {

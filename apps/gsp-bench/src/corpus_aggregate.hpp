@@ -22,6 +22,9 @@ struct CategoryAggregate {
   std::vector<std::pair<std::string, Spread>> figures;  // gsp_mre, gsp_max_re, ..., gsp_query_s
   std::size_t run = 0, failed = 0, with_exact = 0;
   std::size_t gsp_worse_than_dijkstra = 0, gsp_worse_than_heat = 0;   // gsp_worse (corpus.hpp)
+  // The same per source (gsp_worse_sources), out of the sources compared.
+  std::size_t sources_worse_than_dijkstra = 0, sources_worse_than_heat = 0;
+  std::size_t sources_vs_dijkstra = 0, sources_vs_heat = 0;
   std::size_t violating_bounds = 0;                     // gsp_violates (corpus.hpp)
 };
 

@@ -59,6 +59,10 @@ cli::Json aggregate_json(const CategoryAggregate& a) {
   j["with_exact"] = a.with_exact;
   j["gsp_worse_than_dijkstra"] = a.gsp_worse_than_dijkstra;
   j["gsp_worse_than_heat"] = a.gsp_worse_than_heat;
+  j["sources_gsp_worse_than_dijkstra"] = a.sources_worse_than_dijkstra;
+  j["sources_gsp_worse_than_heat"] = a.sources_worse_than_heat;
+  j["sources_compared_with_dijkstra"] = a.sources_vs_dijkstra;
+  j["sources_compared_with_heat"] = a.sources_vs_heat;
   j["violating_bounds"] = a.violating_bounds;
   cli::Json& figures = j["figures"];
   for (const auto& [name, s] : a.figures) {
@@ -156,6 +160,9 @@ std::string corpus_table(const CorpusReport& report) {
                   "%zu; GSP breaks a bound by > 1%% on %zu\n",
                   a.category.c_str(), a.run, a.failed, a.with_exact, a.gsp_worse_than_dijkstra,
                   a.gsp_worse_than_heat, a.violating_bounds);
+    out += line;
+    std::snprintf(line, sizeof line, "  per source: GSP less accurate than dijkstra on %zu of %zu, than heat on %zu of %zu\n",
+                  a.sources_worse_than_dijkstra, a.sources_vs_dijkstra, a.sources_worse_than_heat, a.sources_vs_heat);
     out += line;
     std::snprintf(line, sizeof line, "  %-20s %5s %12s %12s %12s %12s\n", "figure", "n", "mean", "median", "p95",
                   "worst");
