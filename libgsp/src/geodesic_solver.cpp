@@ -191,9 +191,7 @@ bool GeodesicSolver::needs_double() const {
 }
 
 Precision GeodesicSolver::resolved_precision(Precision requested, bool input_faces) const {
-  if (requested != Precision::automatic) return requested;
-  const Triangulation& tri = input_faces || !impl_->delaunay ? impl_->input : *impl_->delaunay;
-  return tri.needs_double ? Precision::double_precision : Precision::single;
+  return impl_->precision_on(input_faces || !impl_->delaunay ? impl_->input : *impl_->delaunay, requested);
 }
 
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
@@ -227,9 +225,7 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
   for (const Source& s : sources) vertex_sources_only &= s.kind == Source::Kind::vertex;
   const bool use_delaunay = impl_->delaunay && vertex_sources_only && !options.want_face_sources;
   const Triangulation& tri = use_delaunay ? *impl_->delaunay : impl_->input;
-  const bool single = options.precision == Precision::single ||
-                      (options.precision == Precision::automatic && !tri.needs_double);
-  if (single) return impl_->run<float>(tri, sources, options);
+  if (impl_->precision_on(tri, options.precision) == Precision::single) return impl_->run<float>(tri, sources, options);
   return impl_->run<double>(tri, sources, options);
 }
 
@@ -268,23 +264,21 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<Real> vmin(nv, inf);
   std::vector<Index> vlabel(nv, kInvalidIndex);
   std::size_t faces_reached = 0;
-  {
-    constexpr std::size_t kBlock = 256;
-    Real corner[3 * kBlock];
-    for (std::size_t begin = 0; begin < nf; begin += kBlock) {
-      const std::size_t end = std::min(nf, begin + kBlock);
-      corner_distances(&state[begin], end - begin, corner);
-      for (std::size_t fi = begin; fi < end; ++fi) {
-        const bool reached = state[fi].reached();
-        faces_reached += reached;
-        const Index label = reached ? state[fi].source() : kInvalidIndex;
-        const Triangle& t = tri.triangles[fi];
-        for (Index i = 0; i < 3; ++i) {
-          const Real d = corner[3 * (fi - begin) + i];
-          const bool better = d < vmin[t[i]];
-          vmin[t[i]] = better ? d : vmin[t[i]];
-          vlabel[t[i]] = better ? label : vlabel[t[i]];
-        }
+  constexpr std::size_t kBlock = 256;
+  Real corner[3 * kBlock];
+  for (std::size_t begin = 0; begin < nf; begin += kBlock) {
+    const std::size_t end = std::min(nf, begin + kBlock);
+    corner_distances(&state[begin], end - begin, corner);
+    for (std::size_t fi = begin; fi < end; ++fi) {
+      const bool reached = state[fi].reached();
+      faces_reached += reached;
+      const Index label = reached ? state[fi].source() : kInvalidIndex;
+      const Triangle& t = tri.triangles[fi];
+      for (Index i = 0; i < 3; ++i) {
+        const Real d = corner[3 * (fi - begin) + i];
+        const bool better = d < vmin[t[i]];
+        vmin[t[i]] = better ? d : vmin[t[i]];
+        vlabel[t[i]] = better ? label : vlabel[t[i]];
       }
     }
   }

@@ -143,6 +143,11 @@ struct GeodesicSolver::Impl {
     if constexpr (std::is_same_v<Real, float>) spare.single = std::move(state); else spare.twice = std::move(state);
   }
 
+  // `requested` with Precision::automatic resolved for a query on `tri`.
+  static Precision precision_on(const Triangulation& tri, Precision requested) {
+    if (requested != Precision::automatic) return requested;
+    return tri.needs_double ? Precision::double_precision : Precision::single;
+  }
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_bridge_vertices();
   void find_coincident_vertices(const Connectivity& conn);
