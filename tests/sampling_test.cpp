@@ -136,6 +136,25 @@ TEST(SamplingPoisson, CountIsMetWithinOnePercent) {
   }
 }
 
+TEST(SamplingPoisson, ExactCountKeepsTheRadius) {
+  const TriangleMesh mesh = fertility();
+  Sampler sampler(mesh);
+  for (std::size_t n : {299u, 1000u}) {
+    SamplingOptions o;
+    o.count = n;
+    o.exact_count = true;
+    const auto r = sampler.sample(o);
+    EXPECT_TRUE(r.stats.count_met);
+    ASSERT_EQ(r.samples.size(), n);
+    // Dropping samples keeps them `radius` apart; the coverage is that of the kept samples:
+    // every vertex within 2 r of one (a maximal sampling leaves them within r; a dropped
+    // sample's disc is covered by its neighbours' doubled ones).
+    const auto q = sampling::measure_quality(sampler, r);
+    EXPECT_GE(q.min_distance_ratio, 0.95);
+    for (double c : r.coverage) EXPECT_LT(c, 2 * r.radius);
+  }
+}
+
 TEST(SamplingFarthest, CountAndSeparation) {
   const TriangleMesh mesh = fertility();
   Sampler sampler(mesh);

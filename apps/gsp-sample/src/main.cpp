@@ -31,7 +31,7 @@ struct Options {
   std::uint64_t seed = 1;
   std::size_t max_rejections = 500;
   std::size_t quality_samples = 0;
-  bool no_fill = false, ascii = false;
+  bool no_fill = false, ascii = false, exact_count = false;
   render::PreviewRequest preview;   // --png, --view, --png-size
   cli::LoadOptions load;
 };
@@ -54,6 +54,8 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--max-rejections", o.max_rejections,
                  "poisson: stop after this many rejected candidates in a row (default 500)")
       ->check(CLI::PositiveNumber);
+  app.add_flag("--exact-count", o.exact_count,
+               "poisson + --count: exactly COUNT samples (the surplus of the closest run above it is dropped)");
   app.add_flag("--no-fill", o.no_fill, "poisson: skip the final pass that adds samples at uncovered vertices");
   app.add_option("--quality-samples", o.quality_samples,
                  "with --stats: measure the nearest-neighbour distance from this many samples (default all)");
@@ -164,6 +166,7 @@ void run(cli::Context& ctx, const Options& o) {
   so.seed = o.seed;
   so.max_rejections = o.max_rejections;
   so.fill_vertices = !o.no_fill;
+  so.exact_count = o.exact_count;
   ctx.settings()["mode"] = o.mode;
   ctx.settings()["seed"] = o.seed;
   if (o.count) ctx.settings()["count"] = o.count;
@@ -171,6 +174,7 @@ void run(cli::Context& ctx, const Options& o) {
   if (so.mode == sampling::Mode::poisson) {
     ctx.settings()["max_rejections"] = o.max_rejections;
     ctx.settings()["fill_vertices"] = so.fill_vertices;
+    if (o.count) ctx.settings()["exact_count"] = so.exact_count;
   }
 
   sampling::SamplingResult result;

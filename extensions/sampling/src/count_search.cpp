@@ -5,11 +5,26 @@
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 
 namespace gsp::sampling {
+
+namespace {
+
+// Per vertex, the distance to the nearest kept sample (one multi-source propagation).
+std::vector<double> coverage_of(const GeodesicSolver& solver, const std::vector<Sample>& samples) {
+  std::vector<Source> sources;
+  sources.reserve(samples.size());
+  for (const Sample& s : samples) sources.push_back(Source::in_face(s.face, s.barycentric));
+  GeodesicOptions options;
+  options.want_face_distances = false;
+  return solver.compute(sources, options).vertex_distance;
+}
+
+}  // namespace
 
 SamplingResult Sampler::poisson_count(const SamplingOptions& options) const {
   const double target = double(options.count);
@@ -18,8 +33,9 @@ SamplingResult Sampler::poisson_count(const SamplingOptions& options) const {
   double lo = 0, hi = std::numeric_limits<double>::infinity();   // radii giving too many / too few
   double prev_log_r = 0, prev_log_n = 0;
   bool have_prev = false;
-  SamplingResult best;
+  SamplingResult best, best_over;   // closest run; closest run with at least `count` (exact_count)
   double best_error = std::numeric_limits<double>::infinity();
+  double best_over_error = std::numeric_limits<double>::infinity();
   SamplingStats total;
   int iterations = 0;
   for (; iterations < options.max_search_iterations; ++iterations) {
@@ -29,8 +45,13 @@ SamplingResult Sampler::poisson_count(const SamplingOptions& options) const {
     total.faces_reached += run.stats.faces_reached;
     const double n = double(run.samples.size());
     const double error = std::abs(n - target);
+    const bool over = n >= target;
+    if (options.exact_count && over && error < best_over_error) {
+      best_over_error = error, best_over = run;
+      if (error <= tolerance) break;
+    }
     if (error < best_error) best_error = error, best = std::move(run);
-    if (error <= tolerance) break;
+    if (!options.exact_count && error <= tolerance) break;
     if (n > target) lo = std::max(lo, r); else hi = std::min(hi, r);
     double slope = -2;
     const double log_r = std::log(r), log_n = std::log(std::max(n, 0.5));
@@ -44,6 +65,15 @@ SamplingResult Sampler::poisson_count(const SamplingOptions& options) const {
     if (!(next > lo && next < hi)) next = lo > 0 ? 2 * lo : 0.5 * hi;
     if (std::abs(next - r) <= 1e-12 * r) break;   // the bracket has closed: counts jump here
     r = next;
+  }
+  if (options.exact_count && std::isfinite(best_over_error)) {
+    best = std::move(best_over);
+    best.samples.resize(options.count);   // the last added go: the rest stay `radius` apart
+    best.coverage = coverage_of(solver_, best.samples);
+    ++total.propagations;
+    best_error = 0;
+  } else if (options.exact_count) {
+    best_error = std::numeric_limits<double>::infinity();   // fewer than asked for
   }
   best.stats.propagations = total.propagations;
   best.stats.update_steps = total.update_steps;

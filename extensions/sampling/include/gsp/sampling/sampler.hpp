@@ -52,6 +52,12 @@ struct SamplingOptions {
   // smaller than an edge). Off: pure dart throwing.
   bool fill_vertices = true;
   double count_tolerance = 0.01;    // relative, for poisson + count
+  // poisson + count: exactly `count` samples. The search then looks for a run with at least
+  // `count` samples (within count_tolerance above it) and drops the last-added surplus, so
+  // samples stay at least `radius` apart; the coverage is recomputed from the kept samples.
+  // When no run reaches `count` (more samples than the mesh holds at any radius the search
+  // tried) the largest run is returned and count_met is false.
+  bool exact_count = false;
   int max_search_iterations = 30;   // sampling runs for poisson + count
   ProgressFn progress;
 };

@@ -1,0 +1,116 @@
+// gsp.cvt and gsp.remesh: geodesic centroidal Voronoi tessellation and its restricted
+// Delaunay remesh, as gsp-cvt does them.
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "progress.hpp"
+
+#include <gsp/cvt/cvt.hpp>
+#include <gsp/cvt/remesh.hpp>
+
+namespace gsp::python {
+
+namespace {
+
+struct Cvt {
+  py::array_t<double> sites, barycentric, energy_curve;
+  py::array_t<std::int64_t> faces, labels;
+  double energy = 0;
+  int iterations = 0;
+  bool converged = false;
+};
+
+cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, const py::object& edge_length,
+                            int iterations, std::uint64_t seed, const std::string& init, const py::object& progress,
+                            const char* count_name) {
+  if (mesh.num_faces() == 0) throw py::value_error("F is empty: a CVT needs faces");
+  if (sites.is_none() == edge_length.is_none())
+    throw py::value_error(std::string("give exactly one of ") + count_name + "= and edge_length=");
+  cvt::CvtOptions o;
+  if (!sites.is_none()) {
+    const long long n = sites.cast<long long>();
+    if (n <= 0) throw py::value_error(std::string(count_name) + " must be > 0");
+    o.sites = std::size_t(n);
+  } else {
+    o.edge_length = edge_length.cast<double>();
+    if (!(o.edge_length > 0) || !std::isfinite(o.edge_length)) throw py::value_error("edge_length must be > 0");
+  }
+  if (iterations < 0) throw py::value_error("iterations must be >= 0");
+  o.max_iterations = iterations;
+  o.seed = seed;
+  if (init == "poisson") o.initial = cvt::InitialSites::poisson;
+  else if (init == "farthest") o.initial = cvt::InitialSites::farthest;
+  else if (init == "random") o.initial = cvt::InitialSites::random;
+  else throw py::value_error("init must be 'poisson', 'farthest' or 'random'");
+  auto tick = interruptible(progress);
+  o.on_iteration = [tick](const cvt::IterationInfo& info) {
+    tick(info.max_iterations ? double(info.iteration) / info.max_iterations : 1.0);
+  };
+  return o;
+}
+
+Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, const py::object& edge_length,
+            int iterations, std::uint64_t seed, const std::string& init, const py::object& progress) {
+  const TriangleMesh mesh = mesh_from_arrays(V, F);
+  const cvt::CvtOptions o = cvt_options(mesh, sites, edge_length, iterations, seed, init, progress, "sites");
+  cvt::CvtResult r;
+  {
+    py::gil_scoped_release nogil;
+    r = cvt::compute_cvt(mesh, o);
+  }
+  std::vector<Vec3> positions;
+  std::vector<std::array<double, 3>> bary;
+  std::vector<Index> faces;
+  for (const cvt::Site& s : r.sites) positions.push_back(s.position), bary.push_back(s.barycentric), faces.push_back(s.face);
+  return {to_array(std::move(positions)), to_array(std::move(bary)), to_array(std::move(r.energy_curve)),
+          labels_to_array(faces), labels_to_array(r.vertex_label), r.energy, r.stats.iterations, r.stats.converged};
+}
+
+py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& vertices, const py::object& edge_length,
+                 int iterations, std::uint64_t seed, bool flip, bool smooth, const py::object& progress) {
+  const TriangleMesh mesh = mesh_from_arrays(V, F);
+  const cvt::CvtOptions o = cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", progress, "vertices");
+  cvt::RemeshResult r;
+  {
+    py::gil_scoped_release nogil;
+    const cvt::CvtResult c = cvt::compute_cvt(mesh, o);
+    cvt::RemeshOptions ro;
+    ro.flip_edges = flip;
+    ro.smooth = smooth;
+    r = cvt::restricted_delaunay(c, ro);
+  }
+  return py::make_tuple(to_array(std::move(r.mesh.positions)), to_array(r.mesh.triangles));
+}
+
+}  // namespace
+
+void bind_cvt(py::module_& m) {
+  py::class_<Cvt>(m, "Cvt", "A geodesic centroidal Voronoi tessellation (gsp.cvt).")
+      .def_readonly("sites", &Cvt::sites, "(k, 3) float64 site positions")
+      .def_readonly("faces", &Cvt::faces, "(k,) int64 input face of each site")
+      .def_readonly("barycentric", &Cvt::barycentric, "(k, 3) float64 each site in its face")
+      .def_readonly("labels", &Cvt::labels, "(n,) int64 per input vertex: its region (site index; -1 unreached)")
+      .def_readonly("energy", &Cvt::energy, "the CVT energy of the final sites")
+      .def_readonly("energy_curve", &Cvt::energy_curve, "energy per accepted iteration (0 = initial sites)")
+      .def_readonly("iterations", &Cvt::iterations)
+      .def_readonly("converged", &Cvt::converged)
+      .def("__repr__", [](const Cvt& c) {
+        return "Cvt(" + std::to_string(c.faces.size()) + " sites, " + std::to_string(c.iterations) + " iterations)";
+      });
+  m.def("cvt", &run_cvt, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sites") = py::none(),
+        py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u,
+        py::arg("init") = "poisson", py::arg("progress") = py::none(),
+        R"(Geodesic centroidal Voronoi tessellation by Lloyd iterations with GSP: a gsp.Cvt.
+
+Exactly one of sites (count) and edge_length (model units). Regions that are not disks are
+repaired by adding sites, so len(result.sites) may exceed `sites` slightly. progress(fraction)
+is called per iteration; Ctrl-C stops it.)");
+  m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("vertices") = py::none(),
+        py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u, py::arg("flip") = true,
+        py::arg("smooth") = true, py::arg("progress") = py::none(),
+        R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
+
+Exactly one of vertices (about that many output vertices) and edge_length. flip and smooth are
+the angle-raising post-passes. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
+}
+
+}  // namespace gsp::python

@@ -1,0 +1,31 @@
+#pragma once
+// gsp.SurfacePoint(face, (b0, b1, b2)) and the conversion of "sources" / "end points"
+// arguments: a vertex index, a SurfacePoint, or a list / 1-D array mixing them.
+#include <gsp/geodesics.hpp>
+#include <gsp/pathfinding/path.hpp>
+
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <vector>
+
+namespace gsp::python {
+
+struct SurfacePoint {
+  Index face = 0;
+  std::array<double, 3> barycentric{1, 0, 0};
+};
+
+void bind_surface_point(pybind11::module_& m);
+
+// An int or numpy integer (not a bool, not an array).
+bool is_index(const pybind11::handle& h);
+// One point: an int (vertex) or a SurfacePoint. Throws ValueError naming `what` when it is
+// neither or names a missing vertex / face.
+Source source_from(const pybind11::handle& h, const TriangleMesh& mesh, const char* what);
+// One point or a list / array of them (an empty list is an error).
+std::vector<Source> sources_from(const pybind11::handle& h, const TriangleMesh& mesh, const char* what);
+
+pathfinding::Endpoint endpoint_from(const Source& s);
+
+}  // namespace gsp::python
