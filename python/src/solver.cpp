@@ -120,6 +120,17 @@ GeodesicOptions query_options(double max_distance, const std::string& strategy, 
 Solver::Solver(TriangleMesh mesh, const SolverOptions& options, bool metric)
     : mesh_(std::make_unique<TriangleMesh>(std::move(mesh))), solver_(*mesh_, options), metric_(metric) {}
 
+GeodesicResult Solver::compute(const std::vector<Source>& sources, GeodesicOptions options) const {
+  struct InFlight {
+    std::atomic<int>& n;
+    int before;
+    explicit InFlight(std::atomic<int>& count) : n(count), before(count.fetch_add(1)) {}
+    ~InFlight() { n.fetch_sub(1); }
+  } guard(in_flight_);
+  if (options.threads == 0 && guard.before > 0) options.threads = 1;
+  return solver_.compute(sources, options);
+}
+
 const pathfinding::PathTracer& Solver::tracer() const {
   std::call_once(tracer_once_, [this] { tracer_ = std::make_unique<pathfinding::PathTracer>(*mesh_); });
   return *tracer_;
@@ -148,7 +159,7 @@ std::shared_ptr<const GeodesicResult> Solver::field_with_sources(const std::vect
   }
   want.want_face_sources = true;
   want.want_face_distances = false;
-  auto field = std::make_shared<const GeodesicResult>(solver_.compute(want_sources, want));
+  auto field = std::make_shared<const GeodesicResult>(compute(want_sources, want));
   std::lock_guard<std::mutex> lock(memo_mutex_);
   field_sources_ = want_sources, field_options_ = want, field_ = field;
   return field;
@@ -190,7 +201,7 @@ threads can query one solver in parallel.)");
         GeodesicResult r;
         {
           py::gil_scoped_release nogil;
-          r = s.solver().compute(src, o);
+          r = s.compute(src, o);
         }
         return with_labels(to_array(std::move(r.vertex_distance)), r.vertex_source, labels);
       },

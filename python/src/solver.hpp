@@ -7,6 +7,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -32,6 +33,10 @@ class Solver {
   void require_3d(const char* what) const;
 
   void remember(const std::vector<Source>& sources, const GeodesicOptions& options);
+  // A query with threads = 0 (automatic) while another runs on this solver in another Python
+  // thread: the caller already runs queries in parallel, so this one takes one thread (as the
+  // library does inside compute_many) instead of competing for the cores.
+  GeodesicResult compute(const std::vector<Source>& sources, GeodesicOptions options) const;
   // The field of `sources` (or of the last remembered query) with per-face virtual sources,
   // computed once per query.
   std::shared_ptr<const GeodesicResult> field_with_sources(const std::vector<Source>* sources,
@@ -41,6 +46,7 @@ class Solver {
   std::unique_ptr<TriangleMesh> mesh_;   // stable address: the solver and tracer refer to it
   GeodesicSolver solver_;
   bool metric_ = false;
+  mutable std::atomic<int> in_flight_{0};
   mutable std::once_flag tracer_once_;
   mutable std::unique_ptr<pathfinding::PathTracer> tracer_;
   std::mutex memo_mutex_;
