@@ -1,6 +1,7 @@
 #include "intrinsic_delaunay.hpp"
 #include "query_steps.hpp"
 #include "solver_impl.hpp"
+#include "straight_line_bound.hpp"
 #include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
@@ -291,6 +292,12 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
         vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
     relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats);
   }
+  // Last on the values: nothing below the straight line (straight_line_bound.hpp), in layout
+  // order (positions and values read in sequence).
+  if (options.straight_line_bound && !custom_lengths)
+    result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
+        nv, [&](std::size_t v) { return mesh.positions[v]; }, vmin.data(), vlabel.data(), mean_edge, true,
+        detail::source_points(mesh, layout, sources));
   result.stats.faces_reached = faces_reached;
   // A vertex source's own value is exact and wins ties against the faces; of several sources
   // at one vertex the smallest value, the first source on ties.

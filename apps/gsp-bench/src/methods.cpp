@@ -24,6 +24,7 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::gsp_no_layout, "gsp-no-layout", "GSP on the file's order, layout optimisation off", true},
       {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
       {Method::gsp_no_relax, "gsp-no-relax", "GSP without the vertex relaxation (per-face virtual sources alone)", false},
+      {Method::gsp_no_line, "gsp-no-line", "GSP without the straight-line bound (values below the segment kept)", false},
       {Method::gsp_2threads, "gsp-2threads", "GSP's parallel propagation on 2 threads (time is wall time)", false},
       {Method::gsp_4threads, "gsp-4threads", "GSP's parallel propagation on 4 threads (time is wall time)", false},
       {Method::dijkstra, "dijkstra", "Dijkstra on the edge graph (binary heap)", true},
@@ -56,7 +57,7 @@ const MethodInfo& method_info(Method id) {
   return all_methods().front();   // unreachable: every enumerator is listed
 }
 
-bool is_gsp(Method id) { return id <= Method::gsp_no_relax; }
+bool is_gsp(Method id) { return id <= Method::gsp_no_line; }
 bool uses_cgal(Method id) { return id == Method::heat || id == Method::heat_idt || id == Method::exact; }
 bool is_points(Method id) {
   return id == Method::points_gsp || id == Method::points_graph_gsp || id == Method::points_dijkstra;
@@ -207,6 +208,7 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::gsp_no_layout: so.optimize_layout = false; break;
     case Method::gsp_input_faces: so.intrinsic_delaunay = false; break;
     case Method::gsp_no_relax: go.vertex_relaxation = false; break;
+    case Method::gsp_no_line: go.straight_line_bound = false; break;
     case Method::gsp_random_layout: return std::make_unique<RandomLayoutRunner>(mesh, seed);
     case Method::dijkstra: return std::make_unique<DijkstraRunner>(mesh);
     case Method::heat: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::direct);

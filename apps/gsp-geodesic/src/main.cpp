@@ -41,6 +41,7 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["relaxed_vertices"] = r.stats.relaxed_vertices;
   ops["pseudo_sources"] = r.stats.pseudo_sources;
   ops["relaxation_rounds"] = r.stats.relaxation_rounds;
+  ops["raised_to_line"] = r.stats.raised_to_line;
 }
 
 // --separate: a field per source, written next to each other; --matrix: the distances between

@@ -101,6 +101,10 @@ struct GeodesicOptions {
   // the paper's per-face virtual sources alone. Full and bounded (compute_local) queries; runs
   // with targets (A*) do not relax: they stop as soon as the targets are final.
   bool vertex_relaxation = true;
+  // The straight-line bound (docs/gsp-core.md): no distance is shorter than the segment from
+  // the nearest source (plus its offset); vertex values below it are raised to it, last.
+  // Ignored with SolverOptions::edge_lengths (a metric is not bounded by 3D segments).
+  bool straight_line_bound = true;
 };
 
 // The virtual source a face ended up with: the geodesic to any point p of the face is the
@@ -127,6 +131,9 @@ struct PropagationStats {
   std::uint64_t relaxed_vertices = 0;
   std::uint64_t pseudo_sources = 0;
   std::uint64_t relaxation_rounds = 0;
+  // Vertices whose value was below the straight line from the nearest source by more than
+  // 1e-6 and were raised to it (GeodesicOptions::straight_line_bound).
+  std::uint64_t raised_to_line = 0;
   bool double_precision = false;     // the precision the query ran in (Precision::automatic decides)
 };
 

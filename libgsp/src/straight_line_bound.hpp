@@ -1,0 +1,89 @@
+#pragma once
+// The straight-line bound (internal): no curve on the surface from a source s (3D point,
+// offset o) to a point x is shorter than the segment, so a distance below min_s |x - s| + o is
+// wrong by construction. After the propagation (and the vertex relaxation) every vertex value
+// below that bound is raised to it: the value then errs less than before, whatever the true
+// distance (it is at least the bound), and the upper bound still holds (a segment is no longer
+// than any path along the edges).
+//
+// Why a projection and not only a fix of the cause: the propagation's values come from
+// unfoldings, and where a face's single virtual source was carried past a vertex on the wrong
+// side (CAD fans, needles, saddles of soups; docs/gsp-core.md, "The straight-line bound") the
+// unfolded segment is shorter than anything in 3D. Those values are a small fraction of the
+// vertices of a few meshes; the bound repairs them wherever they come from, and the count is
+// reported (PropagationStats::raised_to_line) so the cause stays measurable.
+//
+// Not with SolverOptions::edge_lengths: a metric's lengths are not bounded by 3D segments.
+#include <gsp/geodesics.hpp>
+#include <gsp/layout.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace gsp::detail {
+
+struct SourcePoint {
+  Vec3 position;
+  double offset = 0;
+};
+
+// The sources as 3D points. `mesh` is the solver's reordered mesh, `layout` maps input
+// indices to it (sources name input vertices and faces; the corner order of a face is kept).
+inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const Layout& layout,
+                                              const std::vector<Source>& sources) {
+  std::vector<SourcePoint> out;
+  out.reserve(sources.size());
+  for (const Source& s : sources) {
+    if (s.kind == Source::Kind::vertex) {
+      out.push_back({mesh.positions[layout.vertex_rank[s.element]], s.offset});
+    } else {
+      const Triangle& t = mesh.triangles[layout.face_rank[s.element]];
+      const Vec3 p = s.barycentric[0] * mesh.positions[t[0]] + s.barycentric[1] * mesh.positions[t[1]] +
+                     s.barycentric[2] * mesh.positions[t[2]];
+      out.push_back({p, s.offset});
+    }
+  }
+  return out;
+}
+
+// Raises d[i] (and sets label[i] to the nearest source by the bound) where it is below the
+// bound at position(i), for the n values given; unreached (+inf) values are left. The values
+// are in the propagation's units (`scaled`: model units / mean_edge, as the full query keeps
+// them) or in model units (the bounded query); either way a raised value is the bound as the
+// propagation's precision `Real` holds it, rounded up, so both queries give the same numbers.
+// Returns how many were raised by more than 1e-6 of the bound (the rest is rounding of exact
+// values). Cost: a squared distance per vertex (to its labelled source, in the order of the
+// arrays) and, for the few below it, one distance per source.
+template <class Real, class Value, class PositionOf>
+std::size_t raise_to_straight_line(std::size_t n, PositionOf position, Value* d, Index* label, double mean_edge,
+                                   bool scaled, const std::vector<SourcePoint>& sources) {
+  if (sources.empty()) return 0;
+  std::size_t raised = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(d[i] < std::numeric_limits<Value>::infinity())) continue;
+    const double di = scaled ? double(d[i]) * mean_edge : double(d[i]);
+    const Vec3 x = position(i);
+    const Index l = label[i];
+    if (l < sources.size()) {
+      const double r = di - sources[l].offset;
+      const Vec3 e = x - sources[l].position;
+      if (r >= 0 && r * r >= dot(e, e)) continue;
+    }
+    double bound = std::numeric_limits<double>::infinity();
+    Index nearest = l;
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+      const double b = distance(x, sources[s].position) + sources[s].offset;
+      if (b < bound) bound = b, nearest = Index(s);
+    }
+    if (di >= bound) continue;
+    raised += di < bound * (1 - 1e-6);
+    Real v = Real(bound / mean_edge);
+    if (double(v) * mean_edge < bound) v = std::nextafter(v, std::numeric_limits<Real>::infinity());
+    d[i] = scaled ? Value(v) : Value(double(v) * mean_edge);
+    label[i] = nearest;
+  }
+  return raised;
+}
+
+}  // namespace gsp::detail
