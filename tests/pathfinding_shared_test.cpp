@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 
 namespace gsp::test {
@@ -105,6 +106,40 @@ TEST(PathShared, TeapotSeamsGiveEdgeRoutesNotErrors) {
       EXPECT_EQ(distance(p.points.back().position, m.positions[t]), 0.0);
       EXPECT_GT(p.length, 0.99 * p.field_distance);
       EXPECT_LT(p.length, 1.5 * p.field_distance);
+    }
+  }
+}
+
+// A CAD part of needles (face aspect up to 1.7e8) where walks through the field go astray: a
+// traced path left the surface (lengths 15-100% below the geodesic) or wandered (12-49x too
+// long), and one end's walk gave up. The safety net of shortest_paths keeps only surface
+// polylines within 1% of the field or the edge path: every path is measured against CGAL.
+TEST(PathShared, CadNeedlesGiveSurfacePathsNearExact) {
+  const std::string path = data_dir() + "/../corpus/manifold_generic_twin_7081_left.obj";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "corpus mesh missing: " << path;
+  const TriangleMesh m = io::read_mesh(path).mesh;
+  reference::ExactGeodesicSolver exact(m);
+  const GeodesicSolver solver(m);
+  const pathfinding::PathTracer tracer(m);
+  const Index s = 4184;
+  const std::vector<double> ex = exact.distances_from_vertex(s);
+  std::vector<Endpoint> ends;
+  for (Index v : {2410u, 8408u, 4948u, 7959u, 336u, 3016u, 7301u, 9194u, 9208u, 1394u}) ends.push_back(Endpoint::at_vertex(v));
+  for (auto method : {pathfinding::PathMethod::astar}) {
+    for (bool both : {true, false}) {
+      pathfinding::PathQueryOptions o;
+      o.method = method;
+      o.both_ends = both;
+      const auto r = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), ends, o);
+      for (std::size_t k = 0; k < ends.size(); ++k) {
+        const auto& p = r.paths[k];
+        ASSERT_TRUE(p.found());
+        const double e = ex[ends[k].vertex];
+        EXPECT_GE(p.length, e * (1 - 1e-6)) << "end " << ends[k].vertex;   // a surface path is never shorter
+        EXPECT_LE(p.length, e * 1.005) << "end " << ends[k].vertex;
+        EXPECT_EQ(distance(p.points.front().position, m.positions[s]), 0.0);
+        EXPECT_EQ(distance(p.points.back().position, m.positions[ends[k].vertex]), 0.0);
+      }
     }
   }
 }

@@ -24,7 +24,7 @@ namespace {
 using namespace gsp;
 
 struct Options {
-  std::string input, output, from, method = "astar", precision = "single";
+  std::string input, output, from, method = "astar", precision = "auto";
   std::vector<std::string> to;
   bool one_end = false;
   render::PreviewRequest preview;
@@ -44,7 +44,8 @@ void add_options(CLI::App& app, Options& o) {
       ->check(CLI::IsMember({"astar", "settle", "full", "dijkstra-edges"}));
   app.add_flag("--one-end", o.one_end, "trace from --from's field only (half the cost; by default every "
                "--to also propagates back towards --from and the shorter of the two paths is kept)");
-  app.add_option("--precision", o.precision, "single (default) or double")->check(CLI::IsMember({"single", "double"}));
+  app.add_option("--precision", o.precision, "auto (default: double where faces are too thin for float), single or double")
+      ->check(CLI::IsMember({"auto", "single", "double"}));
   render::add_preview_options(app, o.preview, "the mesh with the paths");
   cli::add_load_options(app, o.load);
 }
@@ -94,7 +95,9 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   } else {
     pathfinding::PathQueryOptions po;
     po.method = method_of(o.method);
-    po.precision = o.precision == "double" ? Precision::double_precision : Precision::single;
+    po.precision = o.precision == "double"   ? Precision::double_precision
+                   : o.precision == "single" ? Precision::single
+                                             : Precision::automatic;
     po.both_ends = !o.one_end;
     r = pathfinding::shortest_paths(*solver, tracer, from.endpoint, ends, po);
   }
@@ -119,6 +122,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   }
   ctx.stats()["result"]["found"] = r.paths.size() - missing;
   ctx.stats()["result"]["reversed"] = r.reversed;
+  ctx.stats()["result"]["edge_fallbacks"] = r.edge_fallbacks;
   ctx.stats()["result"]["max_snap_distance"] = snapped;
   cli::Json& ops = ctx.operations();
   ops["faces_expanded"] = r.stats.faces_reached;

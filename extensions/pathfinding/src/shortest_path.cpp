@@ -1,6 +1,9 @@
 #include <gsp/pathfinding/shortest_path.hpp>
 
+#include <gsp/closest_point.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <exception>
 
@@ -82,6 +85,32 @@ double field_at(const TriangleMesh& mesh, const GeodesicResult& field, const End
   return field.distance_at(mesh, e.face, e.barycentric);
 }
 
+// A polyline on the surface from a to b: it starts and ends there and each segment lies in a
+// face one of its two points names (both ends on that triangle, up to 1e-4 of its longest
+// edge; path.hpp: consecutive points share a face).
+bool on_face(const TriangleMesh& mesh, Index f, Vec3 q0, Vec3 q1, double tolerance) {
+  if (f >= mesh.num_faces()) return false;
+  const Triangle& t = mesh.triangles[f];
+  const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+  const double slack = 1e-4 * std::max({distance(p0, p1), distance(p1, p2), distance(p2, p0)}) + tolerance;
+  for (const Vec3 q : {q0, q1}) {
+    const auto w = closest_point_on_triangle(q, p0, p1, p2);
+    if (distance(q, w[0] * p0 + w[1] * p1 + w[2] * p2) > slack) return false;
+  }
+  return true;
+}
+
+bool on_surface(const TriangleMesh& mesh, const std::vector<PathPoint>& points, Vec3 a, Vec3 b, double tolerance) {
+  if (points.empty()) return false;
+  if (distance(points.front().position, a) > tolerance || distance(points.back().position, b) > tolerance) return false;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Vec3 q0 = points[i - 1].position, q1 = points[i].position;
+    if (!on_face(mesh, points[i].face, q0, q1, tolerance) && !on_face(mesh, points[i - 1].face, q0, q1, tolerance))
+      return false;
+  }
+  return true;
+}
+
 void add_stats(PropagationStats& sum, const PropagationStats& s) {
   sum.update_steps += s.update_steps;
   sum.face_updates += s.face_updates;
@@ -91,6 +120,42 @@ void add_stats(PropagationStats& sum, const PropagationStats& s) {
   sum.iterations += s.iterations;
   sum.faces_reached += s.faces_reached;
   sum.mean_edge_length = s.mean_edge_length;
+}
+
+// The paths that failed, are not on the surface, or are more than 1% longer than the field's
+// distance at their end (which is never above the edge path: the vertex relaxation) are set
+// against the path along the edges, which always exists where the end is reached: the shorter
+// valid one is kept. A path that failed and has no edge path either rethrows its error.
+void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
+                     const std::vector<Endpoint>& to, const GeodesicResult& field, std::vector<bool>& invalid,
+                     std::vector<std::exception_ptr>& failed, PathQueryResult& r) {
+  std::vector<std::size_t> suspect;
+  for (std::size_t k = 0; k < to.size(); ++k) {
+    const GeodesicPath& p = r.paths[k];
+    const double d = field_at(mesh, field, to[k]);
+    if (failed[k] || invalid[k] || (p.found() && std::isfinite(d) && !(p.length <= 1.01 * d))) suspect.push_back(k);
+  }
+  if (suspect.empty()) return;
+  const auto t0 = Clock::now();
+  std::vector<Endpoint> ends;
+  for (std::size_t k : suspect) ends.push_back(to[k]);
+  const PathQueryResult edges = edge_paths(mesh, tracer, from, ends);
+  r.trace_seconds += seconds_since(t0);
+  for (std::size_t i = 0; i < suspect.size(); ++i) {
+    const std::size_t k = suspect[i];
+    const GeodesicPath& e = edges.paths[i];
+    GeodesicPath& p = r.paths[k];
+    if (e.found() && (failed[k] || invalid[k] || e.length < p.length)) {
+      const double field_distance = field_at(mesh, field, to[k]);
+      p = e;
+      p.field_distance = field_distance;
+      failed[k] = nullptr;
+      invalid[k] = false;
+      ++r.edge_fallbacks;
+    }
+    if (failed[k]) std::rethrow_exception(failed[k]);
+    if (invalid[k]) p = GeodesicPath{};   // no valid path: as unreachable (never a path off the surface)
+  }
 }
 
 }  // namespace
@@ -109,25 +174,33 @@ PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& t
   // A walk that cannot be completed in this field (and whose descent fallback fails too) is
   // kept as an error: the far end's field may still give the path.
   std::vector<std::exception_ptr> failed(to.size());
+  std::vector<bool> invalid(to.size(), false);
+  const BoundingBox box = bounding_box(mesh);
+  const double tolerance = 1e-6 * box.diagonal();
+  const Vec3 from_pos = endpoint_position(mesh, from);
   r.paths.resize(to.size());
   for (std::size_t k = 0; k < to.size(); ++k) {
     try {
       r.paths[k] = tracer.trace(field, to[k]);
       snap_start(mesh, r.paths[k].points, from);
       r.paths[k].length = polyline_length(r.paths[k].points);
+      if (!on_surface(mesh, r.paths[k].points, from_pos, endpoint_position(mesh, to[k]), tolerance))
+        invalid[k] = true;
     } catch (const NoPath&) {
       // unreachable: an empty path
     } catch (const Error&) {
-      if (!options.both_ends) throw;
       failed[k] = std::current_exception();
     }
   }
   r.trace_seconds = seconds_since(t0);
-  if (!options.both_ends) return r;
+  if (!options.both_ends) {
+    edge_safety_net(mesh, tracer, from, to, field, invalid, failed, r);
+    return r;
+  }
   const GeodesicOptions back_options = field_options(mesh, {from}, options);
   for (std::size_t k = 0; k < to.size(); ++k) {
     GeodesicPath& path = r.paths[k];
-    if (!failed[k] && (!path.found() || !(path.length > 0))) continue;
+    if (!failed[k] && !invalid[k] && (!path.found() || !(path.length > 0))) continue;
     t0 = Clock::now();
     const GeodesicResult back_field = solver.compute({to_source(to[k])}, back_options);
     r.compute_seconds += seconds_since(t0);
@@ -136,20 +209,22 @@ PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& t
     try {
       GeodesicPath back = tracer.trace(back_field, from);
       snap_start(mesh, back.points, to[k]);
-      if (back.found() && polyline_length(back.points) < path.length) {
-        if (failed[k]) path.field_distance = field_at(mesh, field, to[k]);
+      const bool back_valid = back.found() && on_surface(mesh, back.points, endpoint_position(mesh, to[k]), from_pos, tolerance);
+      if (back_valid && (failed[k] || invalid[k] || polyline_length(back.points) < path.length)) {
+        if (failed[k] || invalid[k]) path.field_distance = field_at(mesh, field, to[k]);
         path.points = reversed(mesh, back.points);
         path.length = polyline_length(path.points);
         path.source = 0;
         failed[k] = nullptr;
+        invalid[k] = false;
         ++r.reversed;
       }
     } catch (const Error&) {
       // The walk back from `from` failed in this field: the forward path stands.
     }
     r.trace_seconds += seconds_since(t0);
-    if (failed[k]) std::rethrow_exception(failed[k]);
   }
+  edge_safety_net(mesh, tracer, from, to, field, invalid, failed, r);
   return r;
 }
 

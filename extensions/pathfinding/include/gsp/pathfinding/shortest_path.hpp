@@ -26,7 +26,7 @@ enum class PathMethod : std::uint8_t {
 
 struct PathQueryOptions {
   PathMethod method = PathMethod::astar;
-  Precision precision = Precision::single;
+  Precision precision = Precision::automatic;   // as GeodesicOptions: double where faces need it
   // Also propagate from every end point back towards `from` (same method), trace that field
   // from `from`, and keep the shorter of the two taut paths. A path traced from one field
   // follows that field round a feature; where two routes are almost equally long, the
@@ -41,12 +41,20 @@ struct PathQueryResult {
   PropagationStats stats;            // of the propagation from `from` (faces_reached, update_steps, ...)
   PropagationStats reverse_stats;    // summed over the propagations from the end points (both_ends)
   std::size_t reversed = 0;          // paths taken from the end point's field (shorter than the other)
+  // Paths replaced by the edge path (the safety net of shortest_paths): no traced path was a
+  // valid surface polyline from `from` to the end point within 1% of the field's distance
+  // there, and the path along the edges was shorter.
+  std::size_t edge_fallbacks = 0;
   double compute_seconds = 0, trace_seconds = 0;   // both directions together
 };
 
-// Throws InvalidInput for malformed end points (missing vertex or face, bad barycentrics),
-// gsp::Error when a path cannot be traced in any field (PathTracer::trace). Unreachable end
-// points give empty paths, never NoPath.
+// Every path returned is a polyline on the surface (consecutive points in one face) from
+// `from` to its end point. A traced path that is not (a walk gone astray in a field of CAD
+// needles), or that is more than 1% longer than the field's distance at its end, is compared
+// with the shortest path along the edges and the shorter valid one is kept
+// (PathQueryResult::edge_fallbacks counts the replacements). Throws InvalidInput for malformed
+// end points (missing vertex or face, bad barycentrics). Unreachable end points give empty
+// paths, never NoPath.
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
                                const std::vector<Endpoint>& to, const PathQueryOptions& options = {});
 
