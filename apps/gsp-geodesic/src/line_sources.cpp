@@ -88,6 +88,7 @@ void report(cli::Context& ctx, const lines::LineSource& src, const lines::LineRe
   ops["stale_skipped"] = r.stats.stale_skipped;
   ops["faces_reached"] = r.stats.faces_reached;
   ops["max_waves_per_face"] = r.stats.max_waves_per_face;
+  ops["raised_to_line"] = r.stats.raised_to_line;
 }
 
 }  // namespace

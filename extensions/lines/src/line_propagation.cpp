@@ -9,6 +9,8 @@
 #include <gsp/errors.hpp>
 #include <gsp/lines/line_distances.hpp>
 
+#include "segment_bound.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <limits>
@@ -422,7 +424,10 @@ LineResult line_distances(const TriangleMesh& mesh, const LineSource& source, co
   Propagation p(mesh, options);
   p.seed(source);
   p.run();
-  return p.result();
+  LineResult r = p.result();
+  if (options.straight_line_bound)
+    r.stats.raised_to_line = raise_to_segments(mesh, source, r.vertex_distance, r.vertex_segment);
+  return r;
 }
 
 }  // namespace gsp::lines

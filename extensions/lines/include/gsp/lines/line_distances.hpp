@@ -21,6 +21,9 @@ struct LineOptions {
   // Decides when a carried segment stops being visible through an edge (then the wave bends
   // at the edge's end vertex). The same probe as the core's (gsp/heuristic.hpp).
   VisibilityHeuristic heuristic = VisibilityHeuristic::published();
+  // The straight-line bound (docs/lines.md): no value below the 3D distance to the nearest
+  // straight piece of the source; values below are raised to it, last.
+  bool straight_line_bound = true;
 };
 
 struct LineStats {
@@ -34,6 +37,7 @@ struct LineStats {
   std::uint64_t stale_skipped = 0;    // queue entries of waves dropped before their turn
   std::uint64_t faces_reached = 0;
   std::uint64_t max_waves_per_face = 0;
+  std::uint64_t raised_to_line = 0;   // vertices raised to the straight-line bound (by > 1e-6)
 };
 
 struct LineResult {
