@@ -9,6 +9,7 @@
 #include "surface_point.hpp"
 
 #include <gsp/batch.hpp>
+#include <gsp/strategy_names.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -32,17 +33,9 @@ bool same_query(const GeodesicOptions& a, const GeodesicOptions& b) {
          a.vertex_relaxation == b.vertex_relaxation;
 }
 
-Strategy strategy_from(std::string name) {
-  std::replace(name.begin(), name.end(), '-', '_');
-  if (name == "speed_limiter") return Strategy::speed_limiter;
-  if (name == "speed_limiter_postpone") return Strategy::speed_limiter_postpone;
-  if (name == "static_postpone") return Strategy::static_postpone;
-  if (name == "dynamic_postpone") return Strategy::dynamic_postpone;
-  if (name == "hybrid_postpone") return Strategy::hybrid_postpone;
-  if (name == "bfs") return Strategy::bfs;
-  if (name == "priority_queue") return Strategy::priority_queue;
-  throw py::value_error("strategy must be one of speed_limiter, speed_limiter_postpone, static_postpone, "
-                        "dynamic_postpone, hybrid_postpone, bfs, priority_queue (got '" + name + "')");
+Strategy strategy_from(const std::string& name) {
+  if (const auto s = strategy_from_name(name)) return *s;
+  throw py::value_error("strategy must be one of " + strategy_names() + " (got '" + name + "')");
 }
 
 py::object with_labels(py::array_t<double> distance, const std::vector<Index>& label, bool labels) {

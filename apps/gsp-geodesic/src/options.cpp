@@ -1,4 +1,6 @@
 #include "options.hpp"
+
+#include <gsp/strategy_names.hpp>
 #include "metric_option.hpp"
 
 #include <gsp/cli/app.hpp>
@@ -72,16 +74,8 @@ void add_options(CLI::App& app, Options& o) {
 }
 
 Strategy parse_strategy(const std::string& name) {
-  if (name == "speed-limiter") return Strategy::speed_limiter;
-  if (name == "speed-limiter-postpone") return Strategy::speed_limiter_postpone;
-  if (name == "static-postpone") return Strategy::static_postpone;
-  if (name == "dynamic-postpone") return Strategy::dynamic_postpone;
-  if (name == "hybrid-postpone") return Strategy::hybrid_postpone;
-  if (name == "bfs") return Strategy::bfs;
-  if (name == "priority-queue") return Strategy::priority_queue;
-  throw cli::UsageError("--strategy: \"" + name +
-                        "\" is not one of speed-limiter, speed-limiter-postpone, static-postpone, dynamic-postpone, "
-                        "hybrid-postpone, bfs, priority-queue");
+  if (const auto s = strategy_from_name(name)) return *s;
+  throw cli::UsageError("--strategy: \"" + name + "\" is not one of " + strategy_names());
 }
 
 Precision parse_precision(const std::string& name) {
