@@ -134,7 +134,9 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
       return;
     }
     switch (options.strategy) {
-      case Strategy::speed_limiter: detail::run_speed_limiter(step, queue, f, stats); break;
+      case Strategy::speed_limiter:
+        detail::run_speed_limiter(step, queue, f, stats, false, true);
+        break;
       case Strategy::speed_limiter_postpone: detail::run_speed_limiter(step, queue, f, stats, true); break;
       case Strategy::static_postpone:
         detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, stats);

@@ -38,6 +38,7 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["faces_reached"] = r.stats.faces_reached;
   ops["update_steps_per_face"] = faces ? double(r.stats.update_steps) / double(faces) : 0.0;
   ops["double_precision"] = r.stats.double_precision;
+  ops["switched_to_postpone"] = r.stats.switched_to_postpone;
   ops["relaxed_vertices"] = r.stats.relaxed_vertices;
   ops["pseudo_sources"] = r.stats.pseudo_sources;
   ops["relaxation_rounds"] = r.stats.relaxation_rounds;

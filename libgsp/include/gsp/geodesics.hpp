@@ -38,7 +38,9 @@ struct Source {
 // How the wavefront is scheduled (paper Section 4.2). All give the same distances up to the
 // label-correcting fix point; they differ in speed.
 enum class Strategy : std::uint8_t {
-  speed_limiter,     // default: enqueue in the current queue while d_T < f * i (lean queue)
+  // Default: enqueue in the current queue while d_T < f * i (lean queue); turns into
+  // speed_limiter_postpone where a run stops being linear (propagation.hpp, docs/gsp-core.md).
+  speed_limiter,
   // The speed limiter that also postpones: an entry deferred to the next round and still
   // beyond that round's limit is deferred again, not expanded. Linear where the speed limiter
   // is not (midpoint-subdivided scans: 2.08 instead of 4.61 steps per face at 1.6M vertices,
@@ -135,6 +137,7 @@ struct PropagationStats {
   // 1e-6 and were raised to it (GeodesicOptions::straight_line_bound).
   std::uint64_t raised_to_line = 0;
   bool double_precision = false;     // the precision the query ran in (Precision::automatic decides)
+  bool switched_to_postpone = false; // the speed limiter turned into speed_limiter_postpone (see Strategy)
 };
 
 struct GeodesicResult {
