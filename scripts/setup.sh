@@ -25,6 +25,8 @@ packages=(
   cmake ninja-build g++ clang pkg-config git python3 python3-matplotlib
   # the Python package (python/): bindings, its tests, pip install from the checkout
   python3-dev pybind11-dev python3-numpy python3-pytest python3-setuptools python3-wheel python3-pip python3-venv
+  # gsp.batch: Dask distributed (scheduler, workers, LocalCluster)
+  python3-distributed python3-dask
   # libraries
   libopenmesh-dev libcgal-dev libnanoflann-dev libeigen3-dev libembree-dev libtinygltf-dev
   libcli11-dev libtbb-dev libgtest-dev libbenchmark-dev libpng-dev
