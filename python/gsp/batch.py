@@ -7,7 +7,7 @@ JOB is an app (`geodesic`, `sample`, `remesh`, `path`, `bench`: gsp-geodesic, gs
 gsp-cvt, gsp-path, gsp-bench run as a subprocess on the worker with the job options) or a
 Python callable `module:function` called as `function(V, F, path)` with the mesh's arrays and
 the path to write the mesh's output to (it returns a dict of figures, or None). Inputs are
-files, folders (their mesh files) or globs. Each mesh's output is OUTDIR/<input name>.<ext>;
+files, folders (their mesh files) or globs. Each mesh's output is OUTDIR/<input stem><ext>;
 OUTDIR also gets results.csv and results.json (one row per mesh) and manifest.jsonl (what a
 second run skips). See docs/batch.md.
 
