@@ -296,7 +296,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   // order (positions and values read in sequence).
   if (options.straight_line_bound && !custom_lengths)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        nv, [&](std::size_t v) { return mesh.positions[v]; }, vmin.data(), vlabel.data(), mean_edge, true,
+        nv, nullptr, mesh.positions, vmin.data(), vlabel.data(), mean_edge, true,
         detail::source_points(mesh, layout, sources));
   result.stats.faces_reached = faces_reached;
   // A vertex source's own value is exact and wins ties against the faces; of several sources

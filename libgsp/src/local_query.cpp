@@ -157,13 +157,9 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
                       {ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded}, result.stats);
   result.stats.faces_reached = ws.faces.size();
   if (options.straight_line_bound && !custom_lengths) {
-    std::vector<double> d(ws.vertices.size());
-    std::vector<Index> label(ws.vertices.size());
-    for (std::size_t i = 0; i < d.size(); ++i) d[i] = ws.vdist[ws.vertices[i]], label[i] = ws.vlabel[ws.vertices[i]];
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        d.size(), [&](std::size_t i) { return mesh.positions[ws.vertices[i]]; }, d.data(), label.data(), mean_edge,
-        false, detail::source_points(mesh, layout, sources));
-    for (std::size_t i = 0; i < d.size(); ++i) ws.vdist[ws.vertices[i]] = d[i], ws.vlabel[ws.vertices[i]] = label[i];
+        ws.vertices.size(), ws.vertices.data(), mesh.positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
+        detail::source_points(mesh, layout, sources));
     // A vertex source's own value is exact and wins, as in compute().
     for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
   }

@@ -47,23 +47,26 @@ inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const La
   return out;
 }
 
-// Raises d[i] (and sets label[i] to the nearest source by the bound) where it is below the
-// bound at position(i), for the n values given; unreached (+inf) values are left. The values
-// are in the propagation's units (`scaled`: model units / mean_edge, as the full query keeps
-// them) or in model units (the bounded query); either way a raised value is the bound as the
+// Raises the values below the bound at their vertex to it (and sets the label to the nearest
+// source by the bound); unreached (+inf) values are left. Value i belongs to vertex ids[i]
+// (ids == nullptr: vertex i) of `positions`. The values are in the propagation's units
+// (`scaled`: model units / mean_edge, as the full query keeps them, per vertex) or in model
+// units (the bounded query, per layout vertex); either way a raised value is the bound as the
 // propagation's precision `Real` holds it, rounded up, so both queries give the same numbers.
 // Returns how many were raised by more than 1e-6 of the bound (the rest is rounding of exact
 // values). Cost: a squared distance per vertex (to its labelled source, in the order of the
 // arrays) and, for the few below it, one distance per source.
-template <class Real, class Value, class PositionOf>
-std::size_t raise_to_straight_line(std::size_t n, PositionOf position, Value* d, Index* label, double mean_edge,
-                                   bool scaled, const std::vector<SourcePoint>& sources) {
+template <class Real, class Value>
+std::size_t raise_to_straight_line(std::size_t n, const Index* ids, const std::vector<Vec3>& positions, Value* d,
+                                   Index* label, double mean_edge, bool scaled,
+                                   const std::vector<SourcePoint>& sources) {
   if (sources.empty()) return 0;
   std::size_t raised = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = ids ? ids[k] : k;
     if (!(d[i] < std::numeric_limits<Value>::infinity())) continue;
     const double di = scaled ? double(d[i]) * mean_edge : double(d[i]);
-    const Vec3 x = position(i);
+    const Vec3 x = positions[i];
     const Index l = label[i];
     if (l < sources.size()) {
       const double r = di - sources[l].offset;

@@ -6,6 +6,7 @@
 
 #include <gsp/anisotropic/metric_sources.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gsp::python {
@@ -16,13 +17,11 @@ using anisotropic::MetricField;
 using anisotropic::MetricLocation;
 using anisotropic::SymmetricTensor;
 
-const char* location_name(MetricLocation l) {
-  switch (l) {
-    case MetricLocation::constant: return "constant";
-    case MetricLocation::per_face: return "per_face";
-    case MetricLocation::per_vertex: return "per_vertex";
-  }
-  return "?";
+// The library's name with Python's spelling ("per_face").
+std::string python_location_name(MetricLocation l) {
+  std::string name = anisotropic::location_name(l);
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
 }
 
 MetricLocation location_from(const std::string& name) {
@@ -113,11 +112,11 @@ void bind_metric(py::module_& top) {
 Metric(tensors, location='constant'|'per_face'|'per_vertex'); tensors (3,3), (k,3,3) or (k,6)
 as xx xy xz yy yz zz, symmetric positive definite. A step e costs sqrt(e^T M e).)")
       .def(py::init(&field_from), py::arg("tensors"), py::arg("location") = "constant")
-      .def_property_readonly("location", [](const MetricField& f) { return location_name(f.location); })
+      .def_property_readonly("location", [](const MetricField& f) { return python_location_name(f.location); })
       .def_property_readonly("tensors", [](const MetricField& f) { return tensors_to_array(f.tensors); },
                              "(k, 3, 3) float64")
       .def("__repr__", [](const MetricField& f) {
-        return "Metric(" + std::string(location_name(f.location)) + ", " + std::to_string(f.tensors.size()) + " tensors)";
+        return "Metric(" + python_location_name(f.location) + ", " + std::to_string(f.tensors.size()) + " tensors)";
       });
   m.def("constant", [](const py::handle& t) { return field_from(t, "constant"); }, py::arg("tensor"),
         "One (3,3) tensor for the whole mesh.");

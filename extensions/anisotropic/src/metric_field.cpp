@@ -6,8 +6,6 @@
 #include <string>
 
 namespace gsp::anisotropic {
-namespace {
-
 const char* location_name(MetricLocation l) {
   switch (l) {
     case MetricLocation::constant: return "constant";
@@ -16,8 +14,6 @@ const char* location_name(MetricLocation l) {
   }
   return "?";
 }
-
-}  // namespace
 
 void validate(const TriangleMesh& mesh, const MetricField& field) {
   const std::size_t expected = field.location == MetricLocation::constant   ? 1

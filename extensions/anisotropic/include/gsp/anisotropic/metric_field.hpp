@@ -22,6 +22,9 @@ struct MetricField {
   static MetricField constant(const SymmetricTensor& m) { return {MetricLocation::constant, {m}}; }
 };
 
+// "constant", "per-face", "per-vertex" (the text format's keywords).
+const char* location_name(MetricLocation location);
+
 // Throws InvalidInput when the tensor count does not match the location and the mesh, or a
 // tensor is not finite or not positive definite (the message names its index).
 void validate(const TriangleMesh& mesh, const MetricField& field);
