@@ -44,7 +44,7 @@ SurfacePoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
   best.distance = std::numeric_limits<double>::infinity();
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    if (repeats_vertex(t)) continue;
     const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const auto w = closest_point_on_triangle(p, a, b, c);
     const Vec3 q = w[0] * a + w[1] * b + w[2] * c;

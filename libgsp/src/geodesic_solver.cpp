@@ -26,7 +26,7 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
   skipped_face.assign(mesh.num_faces(), false);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    skipped_face[f] = t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+    skipped_face[f] = repeats_vertex(t);
   }
   input.triangles = mesh.triangles;
   if (edge_lengths.empty()) {
@@ -170,8 +170,11 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
       nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
       nonmanifold.push_back(to_vertex(m.mesh, conn.edge_halfedge[e]));
     }
-  m.vertex_kind = detail::vertex_kinds(m.mesh, m.input.ring, m.skipped_face, nonmanifold,
-                                 m.custom_lengths ? &m.input.length : nullptr);
+  std::vector<std::uint8_t> boundary_halfedge(m.input.ring.size());
+  for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
+    boundary_halfedge[h] = (m.input.ring[h] & detail::kRingIndexMask) == h;
+  m.vertex_kind = intrinsic::vertex_kinds(m.mesh, boundary_halfedge, m.skipped_face, nonmanifold,
+                                          m.custom_lengths ? &m.input.length : nullptr);
   if (options.intrinsic_delaunay) m.build_delaunay();
   (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.vertex_kind);
   auto t2 = Clock::now();

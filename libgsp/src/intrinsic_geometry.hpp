@@ -4,6 +4,8 @@
 // on the +x axis, corner 2 above it (y >= 0); a face's virtual source is a point of that frame.
 // Lengths are divided by the mean edge length so the speed-limiter step f = 1 is one mean edge.
 #include <gsp/heuristic.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/mesh.hpp>
 
 #include <algorithm>
@@ -12,28 +14,13 @@
 
 namespace gsp::detail {
 
-// Per vertex, what the visibility test does at it (propagation.hpp):
-// - kFlatVertex where no shortest path can bend — interior vertices whose angle sum is 2 pi
-//   and boundary vertices whose angle sum is at most pi (within a relative 1e-6). Unfolding
-//   around such a vertex is the same from either side, so a source that the visibility probe
-//   sees just past the vertex is still exact when carried straight on. This makes GSP exact on
-//   flat and developable regions (planar CAD faces, fans) whatever the heuristic says.
-// - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
-//   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
-//   wrong side is shorter than any path on the surface, so the probe is moved towards the
-//   opposite corner there (stricter).
-// - kConvexVertex for the other interior vertices whose angle sum is below 2 pi (positive
-//   curvature). No shortest path turns at such a vertex, and bending a source there is never
-//   shorter than carrying it straight on: the propagation keeps a source straight past one
-//   wherever the probe says "bend" but the centroid is still seen through the edge.
-// The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
-// given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
-inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2, kConvexVertex = 3;
-inline constexpr double kSaddleExcess = 0.01;
-std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<Index>& ring,
-                                       const std::vector<bool>& skipped_face,
-                                       const std::vector<Index>& nonmanifold_vertices,
-                                       const std::vector<double>* length = nullptr);
+// Vertex kinds (flat, saddle, convex) live in the shared layer.
+using intrinsic::kConvexVertex;
+using intrinsic::kFlatVertex;
+using intrinsic::kPlainVertex;
+using intrinsic::kSaddleExcess;
+using intrinsic::kSaddleVertex;
+using intrinsic::vertex_kinds;
 
 // Corner positions of face f in its canonical frame (scaled lengths), in double.
 void canonical_corners(const std::vector<double>& length, Index f, double scale, double out[3][2]);

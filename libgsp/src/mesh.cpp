@@ -22,14 +22,31 @@ void validate(const TriangleMesh& mesh) {
                            " but there are only " + std::to_string(nv));
 }
 
-BoundingBox bounding_box(const TriangleMesh& mesh) {
+namespace {
+
+void grow(BoundingBox& b, const Vec3& p) {
+  b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
+  b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
+}
+
+}  // namespace
+
+BoundingBox bounding_box(const std::vector<Vec3>& points) {
   BoundingBox b;
-  if (mesh.positions.empty()) return b;
-  b.min = b.max = mesh.positions.front();
-  for (const Vec3& p : mesh.positions) {
-    b.min = {std::min(b.min.x, p.x), std::min(b.min.y, p.y), std::min(b.min.z, p.z)};
-    b.max = {std::max(b.max.x, p.x), std::max(b.max.y, p.y), std::max(b.max.z, p.z)};
-  }
+  if (points.empty()) return b;
+  b.min = b.max = points.front();
+  for (const Vec3& p : points) grow(b, p);
+  return b;
+}
+
+BoundingBox bounding_box(const TriangleMesh& mesh) { return bounding_box(mesh.positions); }
+
+BoundingBox face_bounding_box(const TriangleMesh& mesh) {
+  BoundingBox b;
+  if (mesh.triangles.empty()) return b;
+  b.min = b.max = mesh.positions[mesh.triangles.front()[0]];
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) grow(b, mesh.positions[v]);
   return b;
 }
 

@@ -7,6 +7,8 @@
 #include "ring_links.hpp"
 
 #include <gsp/geodesics.hpp>
+#include <gsp/intrinsic/speed_limiter.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -60,6 +62,7 @@ class UpdateStep {
     reached_ = faces, every_update_ = every_update;
   }
 
+  Real key(const QueueEntry<Real>& e) const { return e.dT; }
   bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
   // Starts loading the record an entry will update first (the face across its edge): on
@@ -246,38 +249,14 @@ class UpdateStep {
 
  private:
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
-  // How far past a flat corner (in mean edge lengths) a source may still be carried straight
-  // on: the vertex is flat, its neighbours need not be, and a line carried far past it can
-  // pass a saddle on the wrong side (the STL tyres: flat sidewalls round a saddle rim, vertex
-  // distances up to 20% short). Measured, MRE vs exact over 3 sources: unbounded: tyres 2.36%,
-  // adis16480 0.91%, camelhead 0.244%; 0.5: 0.85%, 0.92%, 0.249%; 0.35 breaks the developable
-  // strip's exactness. (Also requiring every neighbour flat: tyres 0.36% but adis16480 1.04%
-  // and camelhead 0.252%.)
-  static constexpr Real kFlatMiss = Real(0.5);
-  // The probe at a saddle end (kSaddleVertex: angle sum over 2 pi (1 + kSaddleExcess)): 0.75
-  // of the way from the opposite corner to the centroid. Measured, MRE vs exact, 3 sources
-  // (seed 7) / 3 other sources (seed 11): armadillo 0.263 -> 0.176% / 0.294 -> 0.239%,
-  // fertility 0.174 -> 0.164 / 0.226 -> 0.193, camelhead 0.218 -> 0.226 / 0.208 -> 0.211,
-  // bunny 0.211 -> 0.208 / 0.218 -> 0.222, falcon 0.169 -> 0.199 / 0.189 -> 0.236, nefertiti
-  // 0.098 -> 0.108 / 0.095 -> 0.096; CAD meshes equal or better (tyres 0.53 -> 0.43%).
-  // Excess 0.005 or 0.02-0.03 and lambda 0.5-0.9 were worse overall; the opposite corner
-  // itself (lambda 0) over-estimates (falcon 0.42%).
-  // Since the convex rule (a bend at a convex vertex only over-estimates, so fewer sources
-  // bend) the under-estimate at saddles weighs more and 0.75 is better: gsp-bench sources,
-  // seeds 1 / 2 / 3, 0.85 -> 0.75: armadillo 0.233 -> 0.185 / 0.219 -> 0.211 / 0.205 ->
-  // 0.177%, tyres 0.563 -> 0.412 / 0.242 -> 0.236 / 0.655 -> 0.506%, bunny 0.199 -> 0.191 /
-  // 0.207 -> 0.199 / 0.172 -> 0.169%, falcon 0.153 -> 0.174 / 0.150 -> 0.166 / 0.160 ->
-  // 0.171%, the others within 0.01 pp; the largest benign MRE of each set 0.233 / 0.219 /
-  // 0.205 -> 0.203 / 0.211 / 0.177%. (0.7 and 0.8 measured too: armadillo 0.187 / 0.202%.)
-  // Lowering the excess to 0.005 or 0.002 instead made the armadillo over-estimate and the
-  // falcon worse (0.166 / 0.187%).
+  // The corner rules' constants; docs/gsp-core.md (the update step, rules 4, 5 and 7) says
+  // why these values and what the others measured.
+  // Past a flat corner a source goes straight on within this many mean edge lengths.
+  static constexpr Real kFlatMiss = Real(intrinsic::kFlatMiss);
+  // The strict probe at a saddle end (angle sum over 2 pi (1 + kSaddleExcess)): this far from
+  // the opposite corner towards the centroid.
   static constexpr Real kSaddleLambda = Real(0.75);
-  // The probe that can overrule the table's "bend" at a saddle end: 0.3 of the way from the
-  // opposite corner to the centroid. Measured, MRE vs exact, 3 sources, seeds 1 / 2 / 3:
-  // adis16480 0.931 -> 0.734 / 1.180 -> 0.778 / 1.242 -> 0.907%, fence panels 1.039 -> 0.876 /
-  // 0.725 -> 0.718 / 1.428 -> 1.009%, tyres within 0.01 pp; benign within 0.01 pp or better
-  // (camelhead 0.208 -> 0.201%, falcon 0.155 -> 0.153%). 0.5 gave adis 0.887 / 0.906%, fence
-  // 1.033 / 1.135% (seeds 1 / 3); 0.85, as strict as the other saddle probe, tyres 0.676%.
+  // The loose probe that can overrule the table's "bend" at a saddle end.
   static constexpr Real kSaddleLooseLambda = Real(0.3);
   FaceRecord<Real>* faces_;
   const Index* ring_;
@@ -299,70 +278,18 @@ Real min_key(const std::vector<QueueEntry<Real>>& q) {
   return m;
 }
 
-inline constexpr std::size_t kPrefetchDistance = 8;
-
-// Speed limiter with a lean queue: the current queue grows while it is walked; an improved
-// face stays in this round while its distance is below the round's limit. With `postpone`,
-// an entry deferred to a later round that is still beyond that round's limit is deferred
-// again instead of expanded (Strategy::speed_limiter_postpone).
-//
-// `adaptive` (the default strategy): the plain speed limiter turns into the postponing one when
-// more than kSwitchAheadFraction of the entries it has expanded (at least kSwitchMinExpanded)
-// were deferred ones still beyond the limit: the second front the postponing variant removes.
-// Linear runs stay below it (corpus: at most 0.31 on meshes of 30k+ faces, 0.0006-0.016 on
-// Loop- and midpoint-subdivided scans); where the work grows with the mesh (the turbine blade
-// split by midpoints: 0.38 at 800k faces, 0.69 at 3.2M) the rest of the run postpones
-// (docs/gsp-core.md, "Strategies"). Small runs never switch.
-inline constexpr double kSwitchAheadFraction = 0.35;
-inline constexpr std::uint64_t kSwitchMinExpanded = 65536;
+// The speed limiter and its adaptive switch to postponing: the shared driver
+// (gsp/intrinsic/speed_limiter.hpp), counted into the query's statistics.
 template <class Real>
 void run_speed_limiter(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a, Real f, PropagationStats& stats,
                        bool postpone = false, bool adaptive = false) {
-  std::uint64_t ahead = 0, expanded = 0;
-  std::vector<QueueEntry<Real>> b;
-  b.reserve(a.capacity());
-  const Real inf = std::numeric_limits<Real>::infinity();
-  Real limit = min_key(a) + f;
-  Real min_next = inf;   // the smallest distance deferred to the next round
-  while (!a.empty()) {
-    ++stats.iterations;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      const QueueEntry<Real> e = a[i];
-      if (i + kPrefetchDistance < a.size()) step.prefetch(a[i + kPrefetchDistance]);
-      // Deferred from an earlier round and still beyond the limit: deferred again. Expanded
-      // anyway (the paper's rule), such entries form a second front that runs one ring per
-      // round ahead of the limit whatever f is, and every face it reaches is updated again
-      // when the true front comes (steps per face grew with the mesh: 4.6 at 1.6M vertices).
-      if (postpone && !(e.dT < limit)) {
-        if (step.is_stale(e)) {
-          ++stats.stale_skipped;
-          continue;
-        }
-        ++stats.postponed;
-        b.push_back(e);
-        min_next = std::min(min_next, e.dT);
-        continue;
-      }
-      ahead += !(e.dT < limit);   // deferred, still beyond the limit, expanded anyway
-      ++expanded;
-      step.expand(e, [&](const QueueEntry<Real>& n) {
-        ++stats.enqueued;
-        if (n.dT < limit) {
-          a.push_back(n);
-        } else {
-          b.push_back(n);
-          min_next = std::min(min_next, n.dT);
-        }
-      });
-    }
-    a.clear();
-    std::swap(a, b);
-    if (adaptive && !postpone && expanded >= kSwitchMinExpanded && double(ahead) > kSwitchAheadFraction * double(expanded))
-      postpone = stats.switched_to_postpone = true;
-    // Skips ahead where nothing lies in the next band (large gaps, source offsets).
-    limit = postpone ? std::max(limit, min_next) + f : limit + f;
-    min_next = inf;
-  }
+  intrinsic::SpeedLimiterCounters counters;
+  intrinsic::run_speed_limiter(step, a, f, counters, postpone, adaptive);
+  stats.iterations += counters.iterations;
+  stats.enqueued += counters.enqueued;
+  stats.stale_skipped += counters.stale_skipped;
+  stats.postponed += counters.postponed;
+  stats.switched_to_postpone = stats.switched_to_postpone || counters.switched_to_postpone;
 }
 
 enum class Postpone { none, fixed, dynamic, hybrid };

@@ -22,7 +22,6 @@ struct DisjointSets {
   }
 };
 
-bool has_repeated_index(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
 
 // The zero-area threshold scales with the model: area <= 1e-12 * (bbox diagonal)^2, with the
 // box over all positions (as the shared data set's figures are computed).
@@ -148,7 +147,7 @@ TopologyReport analyze_topology(const TriangleMesh& mesh, const Connectivity& co
   // Degenerate faces.
   const double threshold = zero_area_threshold(mesh);
   for (const Triangle& t : mesh.triangles) {
-    if (has_repeated_index(t)) ++r.repeated_index_faces;
+    if (repeats_vertex(t)) ++r.repeated_index_faces;
     else if (triangle_area(mesh, t) <= threshold) ++r.zero_area_faces;
   }
 
@@ -169,7 +168,7 @@ std::vector<bool> degenerate_faces(const TriangleMesh& mesh) {
   std::vector<bool> out(mesh.num_faces());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    out[f] = has_repeated_index(t) || triangle_area(mesh, t) <= threshold;
+    out[f] = repeats_vertex(t) || triangle_area(mesh, t) <= threshold;
   }
   return out;
 }

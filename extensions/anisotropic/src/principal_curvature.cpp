@@ -47,7 +47,7 @@ std::vector<PrincipalCurvature> principal_curvatures(const TriangleMesh& mesh) {
   std::vector<Eigen::Matrix3d> ata(nv, Eigen::Matrix3d::Zero());
   std::vector<Eigen::Vector3d> atb(nv, Eigen::Vector3d::Zero());
   for (const Triangle& t : mesh.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    if (repeats_vertex(t)) continue;
     for (int i = 0; i < 3; ++i) {
       const Index v = t[i];
       for (int k = 1; k < 3; ++k) {

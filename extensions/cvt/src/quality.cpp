@@ -32,7 +32,7 @@ MeshQuality measure_mesh_quality(const TriangleMesh& mesh) {
   for (const Triangle& t : mesh.triangles) {
     const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
     const double area2 = norm(cross(b - a, c - a));
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(area2 * area2 > tiny)) {
+    if (repeats_vertex(t) || !(area2 * area2 > tiny)) {
       q.degenerate++;
       continue;
     }

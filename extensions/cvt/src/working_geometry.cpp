@@ -11,7 +11,7 @@ WorkingGeometry::WorkingGeometry(const TriangleMesh& m) : mesh(m), conn(build_co
   for (Index f = 0; f < m.num_faces(); ++f) {
     const Triangle& t = m.triangles[f];
     const Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
-    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    const bool repeated = repeats_vertex(t);
     area[f] = repeated ? 0.0 : 0.5 * norm(cross(b - a, c - a));
     centroid[f] = (1.0 / 3.0) * (a + b + c);
     total_area += area[f];
@@ -19,14 +19,7 @@ WorkingGeometry::WorkingGeometry(const TriangleMesh& m) : mesh(m), conn(build_co
   boundary_halfedge.resize(conn.num_halfedges());
   for (Index h = 0; h < conn.num_halfedges(); ++h)
     boundary_halfedge[h] = conn.halfedge_edge[h] != kInvalidIndex && conn.radial_next[h] == h;
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const Triangle& t : m.triangles)
-    for (Index v : t) {
-      const Vec3 p = m.positions[v];
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-  diagonal = m.num_faces() ? distance(lo, hi) : 0.0;
+  diagonal = face_bounding_box(m).diagonal();
 }
 
 SurfaceSite WorkingGeometry::at(Index face, std::array<double, 3> b) const {

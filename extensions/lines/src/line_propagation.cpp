@@ -3,12 +3,13 @@
 // over an edge by unfolding its two ends into the neighbour's frame, and bends at the edge's end
 // vertex when the neighbour cannot see it through the edge. Faces are expanded in the order of
 // their waves' distances (a binary heap; a face improved later is expanded again).
-#include "face_frame.hpp"
-
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
 
+#include "segment_2d.hpp"
 #include "segment_bound.hpp"
 
 #include <algorithm>
@@ -21,13 +22,11 @@ namespace gsp::lines {
 
 namespace {
 
-using detail::FaceFrame;
-using detail::Vec2;
+using intrinsic::FaceFrame;
+using intrinsic::Vec2;
 using detail::segment_distance;
+using intrinsic::kFlatMiss;
 
-constexpr double kPi = 3.14159265358979323846;
-// How far past a flat vertex (in mean edge lengths) a wave is still carried straight on.
-constexpr double kFlatMiss = 0.5;
 // Where a face compares its waves: the barycentric grid of order kGrid (corners first), so
 // a wave is kept wherever it is shortest at one of them. On a plane a wave is needed exactly
 // where its segment is the nearest one for some point of the face; a finer grid misses fewer of
@@ -77,31 +76,26 @@ struct Entry {
   bool operator>(const Entry& o) const { return key > o.key; }
 };
 
-// Vertices no geodesic bends around: interior with angle sum 2 pi, boundary with at most pi
-// (a convex boundary corner), none on a non-manifold edge. A wave that loses sight of such a
-// vertex is carried straight on: every unfolding around it agrees, so planes stay exact.
+// Vertices no geodesic bends around (the core's flat kind, gsp/intrinsic/vertex_kinds.hpp):
+// interior with angle sum 2 pi, boundary with at most pi (a convex boundary corner), none on
+// a non-manifold edge. A wave that loses sight of such a vertex is carried straight on: every
+// unfolding around it agrees, so planes stay exact.
 std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connectivity& conn,
                                         const std::vector<std::uint8_t>& skipped) {
-  const std::size_t nv = mesh.num_vertices();
-  std::vector<double> angle(nv, 0.0);
-  std::vector<std::uint8_t> boundary(nv, 0), singular(nv, 0);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    if (skipped[f]) continue;
-    const Triangle& t = mesh.triangles[f];
-    for (int i = 0; i < 3; ++i) {
-      const Vec3 a = mesh.positions[t[(i + 1) % 3]] - mesh.positions[t[i]];
-      const Vec3 b = mesh.positions[t[(i + 2) % 3]] - mesh.positions[t[i]];
-      angle[t[i]] += std::atan2(norm(cross(a, b)), dot(a, b));
-      const Index h = Index(3 * f + i);
-      const std::size_t ring = conn.ring_size(h);
-      if (ring == 1) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
-      if (ring > 2) singular[t[i]] = singular[t[(i + 1) % 3]] = 1;
+  std::vector<std::uint8_t> boundary_halfedge(3 * mesh.num_faces(), 0);
+  std::vector<bool> skipped_face(skipped.begin(), skipped.end());
+  std::vector<Index> nonmanifold;
+  for (Index h = 0; h < Index(3 * mesh.num_faces()); ++h) {
+    if (skipped[face_of(h)]) continue;
+    const std::size_t ring = conn.ring_size(h);
+    boundary_halfedge[h] = ring == 1;
+    if (ring > 2) {
+      nonmanifold.push_back(mesh.triangles[face_of(h)][h % 3]);
+      nonmanifold.push_back(mesh.triangles[face_of(h)][(h + 1) % 3]);
     }
   }
-  constexpr double tol = 1e-6;   // as the core's (intrinsic_geometry.cpp)
-  std::vector<std::uint8_t> flat(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v)
-    flat[v] = !singular[v] && (boundary[v] ? angle[v] <= kPi * (1 + tol) : std::abs(angle[v] - 2 * kPi) <= 2 * kPi * tol);
+  std::vector<std::uint8_t> flat = intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped_face, nonmanifold);
+  for (std::uint8_t& k : flat) k = k == intrinsic::kFlatVertex;
   return flat;
 }
 
@@ -148,9 +142,9 @@ class Propagation {
     double total = 0;
     std::size_t edges = 0;
     for (Index f = 0; f < Index(nf); ++f) {
-      skipped_[f] = detail::repeats_vertex(mesh.triangles[f]);
+      skipped_[f] = repeats_vertex(mesh.triangles[f]);
       if (skipped_[f]) continue;
-      frames_[f] = detail::face_frame(mesh, f);
+      frames_[f] = intrinsic::face_frame(mesh, f);
       for (double l : frames_[f].len) total += l, ++edges;
     }
     scale_ = edges ? total / double(edges) : 1.0;
@@ -177,7 +171,7 @@ class Propagation {
       const FaceFrame& fr = frames_[p.face];
       if (!seeded[p.face]) ++stats_.faces_seeded, seeded[p.face] = 1;
       Vec2 a = fr.at(p.start), b = fr.at(p.end);
-      const double len = detail::length(b - a);
+      const double len = intrinsic::length(b - a);
       if (len > 0 && (p.before > 0 || p.after > 0)) {   // the whole straight run (line_source.hpp)
         const Vec2 dir = (1.0 / len) * (b - a);
         a = a - p.before * dir;
@@ -356,8 +350,8 @@ class Propagation {
       // the end of the edge that gives the shorter path to Q — even at a flat vertex, as the
       // core does: carried on, a wave can circle a vertex that is flat only to 1e-6 and come
       // back a little shorter every round (measured on the bunny: 370 million candidates).
-      const double via_a = segment_distance(A, a, b) + detail::length(Q - A);
-      const double via_b = segment_distance(B, a, b) + detail::length(Q - B);
+      const double via_a = segment_distance(A, a, b) + intrinsic::length(Q - A);
+      const double via_b = segment_distance(B, a, b) + intrinsic::length(Q - B);
       kind = via_a <= via_b ? 1 : 2;
     }
     // A flat end carries the wave straight on only where the line passes it closely: as in
@@ -380,8 +374,8 @@ class Propagation {
       const Vec2 NP = detail::nearest_on_segment(P, a, b);
       int side = 0;
       if (NP.y > eps) {
-        const double via_a = segment_distance(A, a, b) + detail::length(P - A);
-        const double via_b = segment_distance(B, a, b) + detail::length(P - B);
+        const double via_a = segment_distance(A, a, b) + intrinsic::length(P - A);
+        const double via_b = segment_distance(B, a, b) + intrinsic::length(P - B);
         side = via_a <= via_b ? 1 : 2;
       } else if (P.y - NP.y > 0) {
         const double xc = P.x + (NP.x - P.x) * (P.y / (P.y - NP.y));
@@ -392,7 +386,7 @@ class Propagation {
       if (side != 0) {
         const Vec2 corner = side == 1 ? A : B;
         bent = (k + 2) % 3;
-        bent_value = w.sigma + segment_distance(corner, a, b) + detail::length(P - corner);
+        bent_value = w.sigma + segment_distance(corner, a, b) + intrinsic::length(P - corner);
       }
     } else {
       const Vec2 corner = kind == 1 ? A : B;

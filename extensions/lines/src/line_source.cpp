@@ -1,9 +1,8 @@
 // Line sources made of mesh edges: explicit vertex pairs, vertex chains, the boundary.
-#include "face_frame.hpp"
-
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/lines/line_source.hpp>
+#include <gsp/mesh.hpp>
 
 #include <string>
 
@@ -25,7 +24,7 @@ std::size_t add_edge(LineSource& src, const TriangleMesh& mesh, const Connectivi
     const Index corner = conn.vertex_corners[k];
     const Index f = face_of(corner);
     const Triangle& t = mesh.triangles[f];
-    if (detail::repeats_vertex(t)) continue;
+    if (repeats_vertex(t)) continue;
     const int i = int(corner_of(corner));
     for (int step = 1; step <= 2; ++step) {
       const int j = (i + step) % 3;
@@ -76,7 +75,7 @@ LineSource boundary_source(const TriangleMesh& mesh) {
   for (Index h = 0; h < Index(conn.num_halfedges()); ++h) {
     if (conn.radial_next[h] != h || conn.halfedge_edge[h] == kInvalidIndex) continue;
     const Index f = face_of(h);
-    if (detail::repeats_vertex(mesh.triangles[f])) continue;
+    if (repeats_vertex(mesh.triangles[f])) continue;
     const int i = int(corner_of(h)), j = (i + 1) % 3;
     const Index segment = Index(src.segments.size());
     src.pieces.push_back({f, unit(i), unit(j), segment});

@@ -1,9 +1,8 @@
 // 3D polylines laid onto the surface: the closest-point projection of each segment, cut into
 // straight pieces at the faces it crosses (method in line_source.hpp and docs/lines.md).
-#include "face_frame.hpp"
-
 #include <gsp/closest_point.hpp>
 #include <gsp/errors.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/lines/line_source.hpp>
 
 #include <string>
@@ -12,8 +11,8 @@ namespace gsp::lines {
 
 namespace {
 
-using detail::FaceFrame;
-using detail::Vec2;
+using intrinsic::FaceFrame;
+using intrinsic::Vec2;
 
 // Halving a 3D segment this often makes its halves ~1e-9 of its length: if their closest
 // points still lie in faces that touch nowhere, the projection jumps (a gap, a far point).
@@ -106,9 +105,9 @@ void mark_runs(const TriangleMesh& mesh, std::vector<SegmentPiece>& pieces, std:
   std::vector<double> len(end - first);
   std::vector<Vec2> dir(end - first);
   for (std::size_t i = first; i < end; ++i) {
-    const FaceFrame fr = detail::face_frame(mesh, pieces[i].face);
+    const FaceFrame fr = intrinsic::face_frame(mesh, pieces[i].face);
     const Vec2 d = fr.at(pieces[i].end) - fr.at(pieces[i].start);
-    len[i - first] = detail::length(d);
+    len[i - first] = intrinsic::length(d);
     dir[i - first] = len[i - first] > 0 ? (1.0 / len[i - first]) * d : Vec2{0, 0};
   }
   auto continues = [&](std::size_t i) {   // does piece i+1 continue piece i straight?
@@ -118,14 +117,14 @@ void mark_runs(const TriangleMesh& mesh, std::vector<SegmentPiece>& pieces, std:
     if (q.face != p.face) {
       const Triangle &a = mesh.triangles[p.face], &b = mesh.triangles[q.face];
       if (shared_vertices(a, b) < 2) return false;
-      const FaceFrame ff = detail::face_frame(mesh, p.face);
+      const FaceFrame ff = intrinsic::face_frame(mesh, p.face);
       const std::array<Vec2, 3> g = unfold_neighbour(mesh, ff, p.face, q.face);
       auto at = [&](const std::array<double, 3>& w) { return w[0] * g[0] + w[1] * g[1] + w[2] * g[2]; };
       const Vec2 d = at(q.end) - at(q.start);
-      dq = (1.0 / detail::length(d)) * d;
+      dq = (1.0 / intrinsic::length(d)) * d;
     }
     const Vec2 dp = dir[i - first];
-    return std::abs(dp.x * dq.y - dp.y * dq.x) < 1e-8 && detail::dot(dp, dq) > 0;
+    return std::abs(dp.x * dq.y - dp.y * dq.x) < 1e-8 && intrinsic::dot(dp, dq) > 0;
   };
   std::size_t run = first;
   for (std::size_t i = first; i < end; ++i) {
@@ -189,7 +188,7 @@ class Layer {
   // Returns false (and adds nothing) when the line misses the edge, unless `clamp`.
   bool across_edge(const Snapped& s, const Snapped& t, Index segment, bool clamp) {
     const Triangle &fs = mesh_.triangles[s.face], &ft = mesh_.triangles[t.face];
-    const FaceFrame ff = detail::face_frame(mesh_, s.face);
+    const FaceFrame ff = intrinsic::face_frame(mesh_, s.face);
     const std::array<Vec2, 3> g = unfold_neighbour(mesh_, ff, s.face, t.face);
     const int j = shared_halfedge(fs, ft);
     const Vec2 se = ff.to_edge(j, ff.at(s.w));

@@ -17,7 +17,7 @@ Index edge_face(const TriangleMesh& mesh, const Connectivity& conn, Index u, Ind
   for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
     const Index f = face_of(conn.vertex_corners[k]);
     const Triangle& t = mesh.triangles[f];
-    if (!has(t, w) || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+    if (!has(t, w) || repeats_vertex(t)) continue;
     if (x != kInvalidIndex && has(t, x)) return f;
     if (any == kInvalidIndex) any = f;
   }

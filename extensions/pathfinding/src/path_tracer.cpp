@@ -56,7 +56,7 @@ class Walk {
     const Vec3 e0 = mesh_.positions[t[1]] - a, e1 = mesh_.positions[t[2]] - a, e2 = x - a;
     const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
     const double denom = d00 * d11 - d01 * d01;
-    if (!(denom > 1e-12 * d00 * d11) || t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return false;
+    if (!(denom > 1e-12 * d00 * d11) || repeats_vertex(t)) return false;
     b[1] = (d11 * d20 - d01 * d21) / denom;
     b[2] = (d00 * d21 - d01 * d20) / denom;
     b[0] = 1 - b[1] - b[2];

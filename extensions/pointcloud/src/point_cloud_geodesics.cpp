@@ -62,12 +62,7 @@ struct PointCloudGeodesics::Impl {
         unique_of[i] = unique_of[first[i]];
       }
     }
-    Vec3 lo = n ? points[0] : Vec3{}, hi = lo;
-    for (const Vec3& p : points) {
-      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-    }
-    origin = 0.5 * (lo + hi);
+    origin = bounding_box(points).center();
     position.resize(representative.size());
     for (std::size_t u = 0; u < representative.size(); ++u) position[u] = points[representative[u]] - origin;
   }

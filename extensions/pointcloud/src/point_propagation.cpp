@@ -9,6 +9,8 @@
 // to reach points nothing else reaches. docs/pointcloud.md.
 #include "point_propagation.hpp"
 
+#include <gsp/intrinsic/speed_limiter.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -92,6 +94,11 @@ class Expander {
     state_.label[q] = label;
     return true;
   }
+
+  // The speed limiter's view of an entry (gsp/intrinsic/speed_limiter.hpp).
+  double key(const Entry& e) const { return e.d; }
+  bool is_stale(const Entry& e) const { return e.d != state_.distance[e.point]; }
+  void prefetch(const Entry&) const {}
 
   template <class Push>
   void expand(const Entry& e, Push&& push) {
@@ -216,36 +223,19 @@ std::vector<Entry> seed_state(const std::vector<Seed>& seeds, const TangentFrame
 void propagate_gsp(const Domain& domain, const std::vector<Seed>& seeds, const PointGeodesicOptions& options,
                    PointState& state, PointPropagationStats& stats) {
   std::vector<Entry> a = seed_state(seeds, domain.frames, state);
-  std::vector<Entry> b;
   Expander ex(domain, options, state, stats);
-  // Speed limiter (paper 4.2, lean queue): an improved point stays in this round while its
-  // distance is below the limit; the limit grows by f mean link lengths per round.
+  // The core's speed limiter (paper 4.2, lean queue); the step is f mean link lengths.
   const double step = (options.f > 0 ? options.f : 1.0) * (domain.mean_link > 0 ? domain.mean_link : 1.0);
-  double limit = std::numeric_limits<double>::infinity();
-  for (const Entry& e : a) limit = std::min(limit, e.d);
-  limit += step;
   for (;;) {
-    while (!a.empty()) {
-      ++stats.iterations;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        const Entry e = a[i];   // a may grow (and move) while e is expanded
-        ex.expand(e, [&](const Entry& n) {
-          ++stats.enqueued;
-          if (n.d < limit) a.push_back(n); else b.push_back(n);
-        });
-      }
-      a.clear();
-      std::swap(a, b);
-      limit += step;
-    }
+    intrinsic::SpeedLimiterCounters counters;
+    intrinsic::run_speed_limiter(ex, a, step, counters);
+    stats.iterations += counters.iterations;
+    stats.enqueued += counters.enqueued;
     // Points only steep links lead to: reached over them, then the propagation goes on.
     if (!(options.steep_link_slope < 1) && !(options.gap_link_slope < 1)) break;
     for (Index p = 0; p < Index(state.distance.size()); ++p)
       ex.reach_over_steep(p, [&](const Entry& n) { ++stats.enqueued, a.push_back(n); });
     if (a.empty()) break;
-    limit = std::numeric_limits<double>::infinity();
-    for (const Entry& e : a) limit = std::min(limit, e.d);
-    limit += step;
   }
 }
 

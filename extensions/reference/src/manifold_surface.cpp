@@ -14,16 +14,12 @@ namespace {
 std::string face_name(std::size_t f) { return "face " + std::to_string(f); }
 
 void check_faces_not_degenerate(const TriangleMesh& mesh) {
-  Vec3 lo = mesh.positions.empty() ? Vec3{} : mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  const Vec3 diag = hi - lo;
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 diag = box.max - box.min;
   const double min_area = 1e-12 * dot(diag, diag);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+    if (repeats_vertex(t))
       throw TopologyError(face_name(f) + " names vertex " +
                           std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]) +
                           " twice (degenerate face); exact geodesics need a mesh without "

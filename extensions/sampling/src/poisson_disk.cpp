@@ -24,12 +24,7 @@ Sampler::Sampler(const TriangleMesh& mesh, const SolverOptions& options)
       longest_edge_ = std::max(longest_edge_, distance(mesh.positions[t[i]], mesh.positions[t[(i + 1) % 3]]));
     }
   }
-  Vec3 lo = mesh.positions.front(), hi = lo;
-  for (const Vec3& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  diagonal_ = distance(lo, hi);
+  diagonal_ = bounding_box(mesh).diagonal();
 }
 
 double packing_radius(double area, std::size_t count) {

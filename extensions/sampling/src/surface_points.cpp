@@ -8,7 +8,7 @@ namespace gsp::sampling {
 
 double triangle_area(const TriangleMesh& mesh, Index face) {
   const Triangle& t = mesh.triangles[face];
-  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) return 0.0;
+  if (repeats_vertex(t)) return 0.0;
   const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
   return 0.5 * norm(cross(b - a, c - a));
 }

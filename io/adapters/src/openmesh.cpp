@@ -46,7 +46,7 @@ ToOpenMeshResult<Mesh> to_openmesh_impl(const TriangleMesh& mesh) {
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
     // OpenMesh does not check for a repeated corner before linking halfedges.
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
+    if (repeats_vertex(t)) {
       out.skipped_faces.push_back(static_cast<Index>(f));
       continue;
     }

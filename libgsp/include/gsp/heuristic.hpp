@@ -12,6 +12,15 @@
 
 namespace gsp {
 
+// The table index (the four bits above) for a face entered over an edge of length e1, with
+// longest and shortest edges max_e and min_e and height h over e1. One formula for every
+// scalar type: the propagation evaluates it in float or double (ProbeTable, face_record.hpp),
+// the line sources and the training tool in double.
+template <class Real>
+inline int visibility_signature(Real c, Real g, Real hh, Real hg, Real e1, Real max_e, Real min_e, Real h) {
+  return (max_e > c * e1 ? 1 : 0) | (max_e > g * min_e ? 2 : 0) | (h < hh * e1 ? 4 : 0) | (h < hg * max_e ? 8 : 0);
+}
+
 struct VisibilityHeuristic {
   double c = 5.1424;
   double g = 4.20638;
@@ -33,8 +42,7 @@ struct VisibilityHeuristic {
   // Table index for a triangle with shared edge e1, longest/shortest edges max_e/min_e and
   // height h over e1.
   int signature(double e1, double max_e, double min_e, double h) const {
-    return (max_e > c * e1 ? 1 : 0) | (max_e > g * min_e ? 2 : 0) | (h < hh * e1 ? 4 : 0) |
-           (h < hg * max_e ? 8 : 0);
+    return visibility_signature(c, g, hh, hg, e1, max_e, min_e, h);
   }
   double blend(double e1, double max_e, double min_e, double h) const {
     return lambda[signature(e1, max_e, min_e, h)];

@@ -22,13 +22,21 @@ struct TriangleMesh {
 // not finite. Repeated indices, zero areas and duplicates are *not* errors (see topology.hpp).
 void validate(const TriangleMesh& mesh);
 
-// The axis-aligned box of all positions (unreferenced vertices included); a zero box at the
-// origin for a mesh without vertices.
+// True when a triangle names one vertex twice: it has no plane, no angles, no unfolding, and
+// every module leaves it out (topology.hpp counts such faces).
+inline bool repeats_vertex(const Triangle& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
+
+// An axis-aligned box; a zero box at the origin when there is nothing in it.
 struct BoundingBox {
   Vec3 min, max;
   double diagonal() const { return distance(min, max); }
   Vec3 center() const { return 0.5 * (min + max); }
 };
+BoundingBox bounding_box(const std::vector<Vec3>& points);
+// All positions, unreferenced vertices included.
 BoundingBox bounding_box(const TriangleMesh& mesh);
+// Only the vertices the faces name (a file's stray vertices do not count); a zero box for a
+// mesh without faces.
+BoundingBox face_bounding_box(const TriangleMesh& mesh);
 
 }  // namespace gsp

@@ -10,6 +10,7 @@
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/mesh.hpp>
 #include <gsp/types.hpp>
+#include <gsp/weld.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -53,9 +54,7 @@ struct LoadedMesh {
   // Per-mesh-vertex values in the file's vertex order.
   template <class T>
   std::vector<T> to_file_order(const std::vector<T>& values) const {
-    std::vector<T> out(vertex_map.size());
-    for (std::size_t i = 0; i < vertex_map.size(); ++i) out[i] = values[vertex_map[i]];
-    return out;
+    return unweld_values(values, vertex_map);
   }
   // A vertex index as the user sees it (the file's numbering) -> mesh vertex.
   // Throws gsp::InvalidInput naming the file when it is out of range.

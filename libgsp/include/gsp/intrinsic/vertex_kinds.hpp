@@ -1,0 +1,49 @@
+#pragma once
+// What kind of vertex a shortest path meets (internal layer shared by the core's propagation
+// and the extensions; not a stable API).
+#include <gsp/mesh.hpp>
+#include <gsp/types.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace gsp::intrinsic {
+
+// Per vertex, what the visibility test does at it (propagation.hpp):
+// - kFlatVertex where no shortest path can bend — interior vertices whose angle sum is 2 pi
+//   and boundary vertices whose angle sum is at most pi (within a relative kFlatAngleTolerance). Unfolding
+//   around such a vertex is the same from either side, so a source that the visibility probe
+//   sees just past the vertex is still exact when carried straight on. This makes GSP exact on
+//   flat and developable regions (planar CAD faces, fans) whatever the heuristic says.
+// - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
+//   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
+//   wrong side is shorter than any path on the surface, so the probe is moved towards the
+//   opposite corner there (stricter).
+// - kConvexVertex for the other interior vertices whose angle sum is below 2 pi (positive
+//   curvature). No shortest path turns at such a vertex, and bending a source there is never
+//   shorter than carrying it straight on: the propagation keeps a source straight past one
+//   wherever the probe says "bend" but the centroid is still seen through the edge.
+// The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
+// given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
+inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2, kConvexVertex = 3;
+inline constexpr double kSaddleExcess = 0.01;
+//
+// boundary_halfedge[3 f + i] is non-zero where halfedge i of face f is alone on its edge;
+// nonmanifold_vertices (ends of edges with more than two faces, bridges, coincident vertices)
+// are plain: a vertex joining several fans has no single angle sum. Vertices no face uses are
+// plain.
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<std::uint8_t>& boundary_halfedge,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& nonmanifold_vertices,
+                                       const std::vector<double>* length = nullptr);
+
+// Tight on purpose: finely tessellated smooth surfaces stored in float (STL tyres) have many
+// vertices within 1e-5 of flat that geodesics must still bend around (docs/gsp-core.md).
+inline constexpr double kFlatAngleTolerance = 1e-6;
+
+// How far past a flat corner a source may still be carried straight on, in units of the
+// mesh's mean edge length: the vertex is flat, its neighbours need not be, and a line carried
+// far past it can pass a saddle on the wrong side (docs/gsp-core.md has the measurements).
+inline constexpr double kFlatMiss = 0.5;
+
+}  // namespace gsp::intrinsic
