@@ -8,6 +8,7 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/geodesics.hpp>
+#include <gsp/intrinsic/bridge_vertices.hpp>
 #include <gsp/topology.hpp>
 
 #include <algorithm>
@@ -111,40 +112,6 @@ void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
   }
 }
 
-void GeodesicSolver::Impl::find_bridge_vertices() {
-  // Union the faces around each vertex that share an edge through it; more than one group
-  // makes the vertex a bridge.
-  std::vector<Index> parent;
-  std::vector<Index> faces;
-  auto find = [&](Index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    faces.clear();
-    for (Index k = input.corner_begin[v]; k < input.corner_begin[v + 1]; ++k)
-      if (!skipped_face[face_of(input.corners[k])]) faces.push_back(input.corners[k]);
-    if (faces.size() < 2) continue;
-    parent.resize(faces.size());
-    for (Index i = 0; i < faces.size(); ++i) parent[i] = i;
-    std::size_t groups = faces.size();
-    for (Index i = 0; i < faces.size(); ++i) {
-      const Index c = faces[i];
-      for (Index h : {c, prev_halfedge(c)}) {   // the two edges of this face through v
-        for (Index g = input.ring[h] & detail::kRingIndexMask; g != h; g = input.ring[g] & detail::kRingIndexMask) {
-          const Index f = face_of(g);
-          for (Index j = 0; j < faces.size(); ++j)
-            if (face_of(faces[j]) == f) {
-              const Index a = find(i), b = find(j);
-              if (a != b) parent[a] = b, --groups;
-            }
-        }
-      }
-    }
-    if (groups > 1) bridge_vertices.push_back(v);
-  }
-}
-
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
   using Clock = std::chrono::steady_clock;
@@ -160,7 +127,7 @@ GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& o
   const Connectivity conn = build_connectivity(m.mesh);
   m.build_input(conn, options.edge_lengths);
   m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
-  m.find_bridge_vertices();
+  m.bridge_vertices = intrinsic::bridge_vertices(m.mesh, conn, m.skipped_face);
   m.find_coincident_vertices(conn);
   // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
   std::vector<Index> nonmanifold = m.bridge_vertices;

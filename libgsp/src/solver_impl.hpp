@@ -149,7 +149,6 @@ struct GeodesicSolver::Impl {
     return tri.needs_double ? Precision::double_precision : Precision::single;
   }
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
-  void find_bridge_vertices();
   void find_coincident_vertices(const Connectivity& conn);
   void build_delaunay();
   template <class Real>

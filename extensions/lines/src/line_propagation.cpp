@@ -5,6 +5,7 @@
 // their waves' distances (a binary heap; a face improved later is expanded again).
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
+#include <gsp/intrinsic/bridge_vertices.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
@@ -99,38 +100,6 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connecti
   return flat;
 }
 
-// Vertices where faces meet that no edge joins (two cones touching at their tips, CAD parts
-// sharing a corner): their fans of faces are edge-disconnected, so a wave would never cross
-// from one fan to the next. Such vertices pass their distance on as a point source (a bridge,
-// as in the core).
-std::vector<std::uint8_t> bridge_vertices(const TriangleMesh& mesh, const Connectivity& conn,
-                                          const std::vector<std::uint8_t>& skipped) {
-  std::vector<std::uint8_t> bridge(mesh.num_vertices(), 0);
-  std::vector<Index> faces, parent;
-  for (Index v = 0; v < Index(mesh.num_vertices()); ++v) {
-    faces.clear();
-    for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k)
-      if (!skipped[face_of(conn.vertex_corners[k])]) faces.push_back(face_of(conn.vertex_corners[k]));
-    if (faces.size() < 2) continue;
-    parent.resize(faces.size());
-    for (std::size_t i = 0; i < faces.size(); ++i) parent[i] = Index(i);
-    auto root = [&](Index i) {
-      while (parent[i] != i) i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    for (std::size_t i = 0; i < faces.size(); ++i)
-      for (std::size_t j = i + 1; j < faces.size(); ++j) {
-        int shared = 0;   // faces i and j share an edge through v when they share another vertex
-        for (Index x : mesh.triangles[faces[i]])
-          for (Index y : mesh.triangles[faces[j]]) shared += (x == y && x != v) ? 1 : 0;
-        if (shared > 0) parent[root(Index(i))] = root(Index(j));
-      }
-    for (std::size_t i = 1; i < faces.size(); ++i)
-      if (root(Index(i)) != root(0)) bridge[v] = 1;
-  }
-  return bridge;
-}
-
 class Propagation {
  public:
   Propagation(const TriangleMesh& mesh, const LineOptions& options)
@@ -149,7 +118,10 @@ class Propagation {
     }
     scale_ = edges ? total / double(edges) : 1.0;
     flat_ = flat_vertices(mesh, conn_, skipped_);
-    bridge_ = bridge_vertices(mesh, conn_, skipped_);
+    bridge_.assign(mesh.num_vertices(), 0);
+    // Bridges (gsp/intrinsic/bridge_vertices.hpp) pass their distance on as a point source.
+    for (Index v : intrinsic::bridge_vertices(mesh, conn_, std::vector<bool>(skipped_.begin(), skipped_.end())))
+      bridge_[v] = 1;
     distance_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
     segment_.assign(mesh.num_vertices(), kInvalidIndex);
   }

@@ -1,0 +1,52 @@
+#include <gsp/intrinsic/bridge_vertices.hpp>
+
+#include <numeric>
+
+namespace gsp::intrinsic {
+
+std::vector<Index> bridge_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                   const std::vector<bool>& skipped_face) {
+  // Corner ids are halfedge ids: corner h of face f is where halfedge h leaves its vertex.
+  const Index nh = Index(conn.num_halfedges());
+  std::vector<Index> parent(nh);
+  std::iota(parent.begin(), parent.end(), Index(0));
+  auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  auto unite = [&](Index a, Index b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  };
+  for (Index h = 0; h < nh; ++h) {
+    if (skipped_face[face_of(h)]) continue;
+    const Index from = from_vertex(mesh, h);
+    for (Index g = conn.radial_next[h]; g != h; g = conn.radial_next[g]) {
+      if (g < h || skipped_face[face_of(g)]) continue;   // each pair once
+      // h runs from -> to in its face; g runs the same way or the other.
+      if (from_vertex(mesh, g) == from) {
+        unite(h, g), unite(next_halfedge(h), next_halfedge(g));
+      } else {
+        unite(h, next_halfedge(g)), unite(next_halfedge(h), g);
+      }
+    }
+  }
+  std::vector<Index> bridges;
+  for (Index v = 0; v < Index(mesh.num_vertices()); ++v) {
+    Index first = kInvalidIndex;
+    for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
+      const Index c = conn.vertex_corners[k];
+      if (skipped_face[face_of(c)]) continue;
+      const Index r = find(c);
+      if (first == kInvalidIndex) {
+        first = r;
+      } else if (r != first) {
+        bridges.push_back(v);
+        break;
+      }
+    }
+  }
+  return bridges;
+}
+
+}  // namespace gsp::intrinsic

@@ -1,0 +1,100 @@
+// The intrinsic-geometry layer the core and the extensions share (gsp/intrinsic/): bridge
+// vertices, vertex kinds and face frames on meshes built in code, whose answers follow from
+// their construction.
+#include <gsp/connectivity.hpp>
+#include <gsp/intrinsic/bridge_vertices.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
+
+#include <gtest/gtest.h>
+
+#include "helpers/mesh_builders.hpp"
+
+#include <cmath>
+
+namespace gsp {
+namespace {
+
+std::vector<bool> none_skipped(const TriangleMesh& m) { return std::vector<bool>(m.num_faces(), false); }
+
+std::vector<Index> bridges(const TriangleMesh& m, std::vector<bool> skipped = {}) {
+  if (skipped.empty()) skipped = none_skipped(m);
+  return intrinsic::bridge_vertices(m, build_connectivity(m), skipped);
+}
+
+TEST(Bridges, BowtieCentreIsTheOnlyBridge) { EXPECT_EQ(bridges(test::bowtie()), std::vector<Index>{0}); }
+
+TEST(Bridges, ClosedAndOpenManifoldsHaveNone) {
+  EXPECT_TRUE(bridges(test::tetrahedron()).empty());
+  EXPECT_TRUE(bridges(test::icosphere(2)).empty());
+  EXPECT_TRUE(bridges(test::grid(6)).empty());
+  // Inconsistent orientation joins fans all the same: the edge is shared either way.
+  EXPECT_TRUE(bridges(test::flipped_face_tetrahedron()).empty());
+  // A non-manifold edge joins its three pages: one fan at each spine vertex.
+  EXPECT_TRUE(bridges(test::book()).empty());
+}
+
+TEST(Bridges, TwoTetrahedraTouchingAtACorner) {
+  TriangleMesh m = test::tetrahedron();
+  const Index n = Index(m.num_vertices());
+  const TriangleMesh t = test::tetrahedron();
+  for (const Vec3& p : t.positions) m.positions.push_back(Vec3{-p.x, -p.y, -p.z});
+  for (const Triangle& f : t.triangles) {
+    Triangle g = f;
+    for (Index& v : g) v = v == 0 ? 0 : v + n;   // vertex 0 is shared: the two touch there
+    m.triangles.push_back(g);
+  }
+  EXPECT_EQ(bridges(m), std::vector<Index>{0});
+}
+
+TEST(Bridges, SkippedFacesDoNotJoinFans) {
+  // Round vertex 0: faces 0 and 1 share edge 0-2, face 2 shares no edge with them (two
+  // fans); face 3 shares 0-5 with face 2 and 0-1 with face 0 (one fan), unless it is skipped.
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}, {0, -1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 5}};
+  EXPECT_EQ(bridges(m), std::vector<Index>{0});   // fan {0, 1} and fan {2}
+  m.triangles.push_back({0, 5, 1});                // joins them: one fan
+  EXPECT_TRUE(bridges(m).empty());
+  EXPECT_EQ(bridges(m, {false, false, false, true}), std::vector<Index>{0});
+}
+
+TEST(VertexKinds, GridInteriorFlatAndCornersFlatBoundary) {
+  const TriangleMesh m = test::grid(4);
+  const Connectivity conn = build_connectivity(m);
+  std::vector<std::uint8_t> boundary(3 * m.num_faces());
+  for (Index h = 0; h < Index(boundary.size()); ++h) boundary[h] = conn.ring_size(h) == 1;
+  const auto kind = intrinsic::vertex_kinds(m, boundary, none_skipped(m), {});
+  // Every vertex of a plane is flat: interior 2 pi, boundary at most pi.
+  for (std::uint8_t k : kind) EXPECT_EQ(k, intrinsic::kFlatVertex);
+  // Named non-manifold vertices are plain whatever their angles.
+  const auto marked = intrinsic::vertex_kinds(m, boundary, none_skipped(m), {0});
+  EXPECT_EQ(marked[0], intrinsic::kPlainVertex);
+}
+
+TEST(VertexKinds, IcosphereIsConvexEverywhere) {
+  const TriangleMesh m = test::icosphere(1);
+  const std::vector<std::uint8_t> boundary(3 * m.num_faces(), 0);
+  for (std::uint8_t k : intrinsic::vertex_kinds(m, boundary, none_skipped(m), {})) EXPECT_EQ(k, intrinsic::kConvexVertex);
+}
+
+TEST(FaceFrame, LengthsAreKeptAndEdgeFramesInvert) {
+  const intrinsic::FaceFrame f = intrinsic::face_frame({3.0, 4.0, 5.0});   // right angle at corner 1
+  EXPECT_DOUBLE_EQ(f.corner[2].x, 3.0);
+  EXPECT_DOUBLE_EQ(f.corner[2].y, 4.0);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(intrinsic::length(f.corner[(j + 1) % 3] - f.corner[j]), f.len[j], 1e-12);
+    const intrinsic::Vec2 p{0.7, 1.3};
+    const intrinsic::Vec2 back = f.from_edge(j, f.to_edge(j, p));
+    EXPECT_NEAR(back.x, p.x, 1e-12);
+    EXPECT_NEAR(back.y, p.y, 1e-12);
+    EXPECT_GT(f.to_edge(j, f.corner[(j + 2) % 3]).y, 0);   // the face lies on +y of every edge
+  }
+  // Coincident corners 0 and 1: corner 2 on the x axis at its distance.
+  const intrinsic::FaceFrame d = intrinsic::face_frame({0.0, 2.0, 2.0});
+  EXPECT_DOUBLE_EQ(d.corner[2].x, 2.0);
+  EXPECT_DOUBLE_EQ(d.corner[2].y, 0.0);
+}
+
+}  // namespace
+}  // namespace gsp
