@@ -1,6 +1,6 @@
-#include <gsp/intrinsic/bridge_vertices.hpp>
+#include "disjoint_sets.hpp"
 
-#include <numeric>
+#include <gsp/intrinsic/bridge_vertices.hpp>
 
 namespace gsp::intrinsic {
 
@@ -8,16 +8,8 @@ std::vector<Index> bridge_vertices(const TriangleMesh& mesh, const Connectivity&
                                    const std::vector<bool>& skipped_face) {
   // Corner ids are halfedge ids: corner h of face f is where halfedge h leaves its vertex.
   const Index nh = Index(conn.num_halfedges());
-  std::vector<Index> parent(nh);
-  std::iota(parent.begin(), parent.end(), Index(0));
-  auto find = [&](Index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  auto unite = [&](Index a, Index b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  };
+  detail::DisjointSets sets(nh);
+  auto unite = [&](Index a, Index b) { sets.unite(a, b); };
   for (Index h = 0; h < nh; ++h) {
     if (skipped_face[face_of(h)]) continue;
     const Index from = from_vertex(mesh, h);
@@ -37,7 +29,7 @@ std::vector<Index> bridge_vertices(const TriangleMesh& mesh, const Connectivity&
     for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
       const Index c = conn.vertex_corners[k];
       if (skipped_face[face_of(c)]) continue;
-      const Index r = find(c);
+      const Index r = sets.find(c);
       if (first == kInvalidIndex) {
         first = r;
       } else if (r != first) {

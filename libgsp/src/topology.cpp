@@ -1,3 +1,5 @@
+#include "disjoint_sets.hpp"
+
 #include <gsp/topology.hpp>
 
 #include <algorithm>
@@ -6,33 +8,14 @@
 namespace gsp {
 namespace {
 
-// Union-find with path halving; union by index (the smaller index stays root) so that the
-// result never depends on the order of unions.
-struct DisjointSets {
-  std::vector<Index> parent;
-  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), Index{0}); }
-  Index find(Index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(Index a, Index b) {
-    a = find(a), b = find(b);
-    if (a < b) parent[b] = a;
-    else if (b < a) parent[a] = b;
-  }
-};
 
 
 // The zero-area threshold scales with the model: area <= 1e-12 * (bbox diagonal)^2, with the
 // box over all positions (as the shared data set's figures are computed).
 double zero_area_threshold(const TriangleMesh& mesh) {
   if (mesh.positions.empty()) return 0.0;
-  Vec3 lo = mesh.positions[0], hi = lo;
-  for (const Vec3& p : mesh.positions) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  const Vec3 d = hi - lo;
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 d = box.max - box.min;
   return 1e-12 * dot(d, d);
 }
 
@@ -105,7 +88,7 @@ TopologyReport analyze_topology(const TriangleMesh& mesh, const Connectivity& co
 
   // Per-edge classification; vertices on non-manifold edges are non-manifold vertices.
   std::vector<bool> on_nonmanifold_edge(nv, false);
-  DisjointSets boundary_sets(nv);
+  detail::DisjointSets boundary_sets(nv);
   std::vector<bool> on_boundary(nv, false);
   for (Index h0 : conn.edge_halfedge) {
     const std::size_t ring = conn.ring_size(h0);
@@ -125,7 +108,7 @@ TopologyReport analyze_topology(const TriangleMesh& mesh, const Connectivity& co
     if (on_boundary[v] && boundary_sets.find(static_cast<Index>(v)) == v) ++r.boundary_loops;
 
   // Components: faces joined through shared vertices.
-  DisjointSets vertex_sets(nv);
+  detail::DisjointSets vertex_sets(nv);
   for (const Triangle& t : mesh.triangles) {
     vertex_sets.unite(t[0], t[1]);
     vertex_sets.unite(t[1], t[2]);
