@@ -57,7 +57,7 @@ double median_seconds(int runs, F&& f) {
 // (0 = automatic), against one thread.
 void BM_Propagation(benchmark::State& state) {
   const GeodesicSolver& s = solver(int(state.range(0)));
-  const std::size_t nv = s.layout().vertex_order.size();
+  const std::size_t nv = s.num_vertices();
   const std::vector<Source> src = sources(nv, int(state.range(1)));
   GeodesicOptions one, many;
   one.threads = 1;
@@ -81,7 +81,7 @@ void BM_Propagation(benchmark::State& state) {
 void BM_Independent(benchmark::State& state) {
   const GeodesicSolver& s = solver(int(state.range(0)));
   std::vector<std::vector<Source>> queries;
-  for (const Source& x : sources(s.layout().vertex_order.size(), 16)) queries.push_back({x});
+  for (const Source& x : sources(s.num_vertices(), 16)) queries.push_back({x});
   const double t1 = median_seconds(3, [&] { benchmark::DoNotOptimize(compute_many(s, queries, {}, 1)); });
   double total = 0;
   std::size_t runs = 0;

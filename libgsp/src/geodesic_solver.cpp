@@ -153,7 +153,9 @@ GeodesicSolver::~GeodesicSolver() = default;
 GeodesicSolver::GeodesicSolver(GeodesicSolver&&) noexcept = default;
 GeodesicSolver& GeodesicSolver::operator=(GeodesicSolver&&) noexcept = default;
 
-const Layout& GeodesicSolver::layout() const { return impl_->layout; }
+std::size_t GeodesicSolver::num_vertices() const { return impl_->mesh.num_vertices(); }
+std::size_t GeodesicSolver::num_faces() const { return impl_->mesh.num_faces(); }
+const std::vector<Index>& GeodesicSolver::face_memory_rank() const { return impl_->layout.face_rank; }
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 

@@ -83,7 +83,7 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
   // Candidates come in batches, each processed in the solver's cache layout order: runs then
   // sweep the memory forward instead of jumping at random (the dart throwing stays the same:
   // each candidate is accepted iff no earlier sample is within r).
-  const std::vector<Index>& rank = solver_.layout().face_rank;
+  const std::vector<Index>& rank = solver_.face_memory_rank();
   std::vector<Sample> batch;
   std::size_t rejected_in_a_row = 0;
   while (rejected_in_a_row < options.max_rejections && field.uncovered() > 0) {

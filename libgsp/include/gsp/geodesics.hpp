@@ -231,7 +231,12 @@ class GeodesicSolver {
   LocalField compute_local(const std::vector<Source>& sources, const GeodesicOptions& options,
                            LocalWorkspace& workspace) const;
 
-  const Layout& layout() const;
+  std::size_t num_vertices() const;
+  std::size_t num_faces() const;
+  // Per input face, its place in the solver's memory order: work on many faces at once (a
+  // batch of candidate points) sorted by it sweeps the solver's state forward instead of
+  // jumping at random. Not needed for any result.
+  const std::vector<Index>& face_memory_rank() const;
   const SolverTimings& timings() const;
   std::size_t intrinsic_flips() const;   // edges flipped to make the intrinsic Delaunay triangulation
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
