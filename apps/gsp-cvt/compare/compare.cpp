@@ -12,6 +12,7 @@
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/remesh.hpp>
+#include <gsp/cvt/surface.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/topology.hpp>
 
@@ -43,6 +44,7 @@ struct Row {
   std::string note;
   std::string error;                  // non-empty: the method failed, nothing else is valid
   cli::Json phases = cli::Json::object();   // seconds per phase (gsp)
+  cli::Json components = cli::Json::array();  // per input component: outcome and reason (gsp)
 };
 
 double surface_area(const TriangleMesh& m) {
@@ -77,23 +79,31 @@ Row cgal_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) 
 Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   Row row;
   row.method = "gsp-cvt (Lloyd + restricted Delaunay)";
-  cvt::CvtOptions co;
-  co.sites = wanted;
-  co.max_iterations = o.cvt_iterations;
+  cvt::SurfaceRemeshOptions so;
+  so.cvt.sites = wanted;
+  so.cvt.max_iterations = o.cvt_iterations;
   const auto t0 = Clock::now();
-  const cvt::CvtResult r = cvt::compute_cvt(mesh, co);
-  const auto t1 = Clock::now();
-  row.mesh = cvt::restricted_delaunay(r).mesh;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
+  row.mesh = r.mesh;
   row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  row.note = std::to_string(r.stats.iterations) + " iterations";
-  const cvt::CvtTimings& t = r.stats.timings;
+  row.note = std::to_string(r.cvt_stats.iterations) + " iterations, " + std::to_string(r.remeshed()) + " of " +
+             std::to_string(r.components.size()) + " components remeshed";
+  const cvt::CvtTimings& t = r.cvt_stats.timings;
   row.phases["subdivide"] = t.subdivide;
   row.phases["prepare"] = t.prepare;
   row.phases["initial"] = t.initial;
   row.phases["propagate"] = t.propagate;
   row.phases["centroids"] = t.centroids;
   row.phases["fix"] = t.fix;
-  row.phases["remesh"] = std::chrono::duration<double>(Clock::now() - t1).count();
+  row.phases["remesh"] = r.remesh_seconds;
+  for (const cvt::ComponentReport& c : r.components) {
+    cli::Json j = cli::Json::object();
+    j["input_faces"] = c.input_faces;
+    j["sites"] = c.sites;
+    j["outcome"] = cvt::outcome_name(c.outcome);
+    j["reason"] = c.reason;
+    row.components.push_back(std::move(j));
+  }
   return row;
 }
 
@@ -139,6 +149,7 @@ void run(cli::Context& ctx, const Options& o) {
     j["note"] = r.note;
     j["seconds"] = r.seconds;
     j["phases"] = r.phases;
+    j["components"] = r.components;
     const cvt_compare::Measures m = cvt_compare::measure_output(in.mesh, r.mesh, o.hausdorff_samples);
     std::printf("| %s | %zu | %.1f | %.2f%% | %.3f | %lld / %zu / %zu | %s | %s | %.2f |\n", r.method.c_str(),
                 m.topology.vertices, m.min_angle, m.percent_below_30, m.hausdorff_percent,

@@ -22,7 +22,9 @@ struct Measures {
   double min_angle = 0, mean_min_angle = 0, percent_below_30 = 0, mean_aspect_ratio = 0;
   std::size_t degenerate = 0;
   double hausdorff_percent = NAN;   // NaN: a surface without area
-  bool topology_kept = false;       // manifold, oriented, no duplicates, per-component topology of the input
+  // Manifold, oriented, no duplicates, the per-component topology of the input with its
+  // non-manifold vertices split (cvt::split_nonmanifold_vertices).
+  bool topology_kept = false;
   std::string topology_difference;
 };
 

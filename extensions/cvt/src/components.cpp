@@ -125,6 +125,57 @@ ComponentTopology component_topology(const TriangleMesh& component) {
   return c;
 }
 
+VertexSplit split_nonmanifold_vertices(const TriangleMesh& mesh) {
+  const Connectivity conn = build_connectivity(mesh);
+  const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
+  auto corner = [&](Index f, Index v) {
+    const Triangle& t = mesh.triangles[f];
+    return 3 * f + (t[0] == v ? 0 : t[1] == v ? 1 : 2);
+  };
+  // Corners around a vertex are in one fan when their faces share a manifold edge there.
+  std::vector<Index> parent(3 * nf);
+  std::iota(parent.begin(), parent.end(), Index(0));
+  std::vector<bool> on_nonmanifold_edge(nv, false);
+  for (Index h = 0; h < conn.num_halfedges(); ++h) {
+    if (conn.halfedge_edge[h] == kInvalidIndex) continue;
+    const std::size_t ring = conn.ring_size(h);
+    const Index a = from_vertex(mesh, h), b = to_vertex(mesh, h);
+    if (ring > 2) on_nonmanifold_edge[a] = on_nonmanifold_edge[b] = true;
+    if (ring != 2) continue;
+    const Index f = face_of(h), g = face_of(conn.radial_next[h]);
+    for (Index v : {a, b}) {
+      const Index x = find_root(parent, corner(f, v)), y = find_root(parent, corner(g, v));
+      if (x != y) parent[std::max(x, y)] = std::min(x, y);
+    }
+  }
+  VertexSplit out;
+  out.mesh = mesh;
+  out.vertex_source.resize(nv);
+  std::iota(out.vertex_source.begin(), out.vertex_source.end(), Index(0));
+  // Per vertex, the fan (corner root) that keeps the vertex; other fans get copies.
+  std::vector<Index> keeper(nv, kInvalidIndex);
+  std::vector<bool> counted(nv, false);
+  std::unordered_map<Index, Index> copy_of_root;
+  for (Index c = 0; c < 3 * nf; ++c) {
+    const Triangle& t = mesh.triangles[c / 3];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;   // a degenerate face stays as it is
+    const Index v = t[c % 3];
+    if (on_nonmanifold_edge[v]) continue;
+    const Index root = find_root(parent, c);
+    if (keeper[v] == kInvalidIndex) keeper[v] = root;
+    if (root == keeper[v]) continue;
+    auto [it, inserted] = copy_of_root.try_emplace(root, Index(out.mesh.positions.size()));
+    if (inserted) {
+      out.mesh.positions.push_back(mesh.positions[v]);
+      if (!mesh.normals.empty()) out.mesh.normals.push_back(mesh.normals[v]);
+      out.vertex_source.push_back(v);
+      if (!counted[v]) counted[v] = true, ++out.split;
+    }
+    out.mesh.triangles[c / 3][c % 3] = it->second;
+  }
+  return out;
+}
+
 std::size_t duplicate_vertices(const TriangleMesh& mesh) {
   std::vector<bool> used(mesh.num_vertices(), false);
   for (const Triangle& t : mesh.triangles)

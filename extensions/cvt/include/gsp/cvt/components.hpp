@@ -41,6 +41,18 @@ ComponentTopology component_topology(const TriangleMesh& component);
 // exists.
 std::int64_t orient_consistently(TriangleMesh& mesh);
 
+// A vertex where two or more fans of faces meet (two cones touching at their tips, two
+// boundary loops through one vertex) is one vertex per fan on the surface it describes: each
+// fan gets its own copy (at the same position), so the mesh becomes manifold there. Vertices
+// on a non-manifold edge are left alone (no split makes those manifold). Faces keep their
+// order; vertex_source maps every vertex of the result to the input vertex it copies.
+struct VertexSplit {
+  TriangleMesh mesh;
+  std::vector<Index> vertex_source;
+  std::size_t split = 0;   // input vertices that were split
+};
+VertexSplit split_nonmanifold_vertices(const TriangleMesh& mesh);
+
 // Referenced vertices whose position equals that of another referenced vertex (bit-identical):
 // a remesh must have none.
 std::size_t duplicate_vertices(const TriangleMesh& mesh);
