@@ -25,11 +25,12 @@ import time
 MESH_EXTENSIONS = (".obj", ".off", ".ply", ".stl", ".gltf", ".glb")
 METHODS = (("gsp", "gsp-cvt"), ("cgal", "CGAL"))
 OUTPUT_FIELDS = ("status", "vertices", "min_angle", "percent_below_30", "hausdorff_percent_of_diagonal",
+                 "feature_distance_percent_of_diagonal",
                  "manifold", "euler_characteristic", "boundary_loops", "components", "duplicate_vertices",
                  "inconsistent_edges", "topology_kept", "topology_difference", "seconds", "note")
 PHASES = ("subdivide", "prepare", "initial", "propagate", "centroids", "fix", "remesh")
 INPUT_FIELDS = ("vertices", "triangles", "components", "surface_components", "manifold", "euler_characteristic",
-                "boundary_loops", "inconsistent_edges")
+                "boundary_loops", "inconsistent_edges", "feature_edges")
 
 
 def table_rows(path):
@@ -139,6 +140,7 @@ FIGURES = (  # (column suffix, label, worst is the minimum)
     ("min_angle", "min angle (deg)", True),
     ("percent_below_30", "angles < 30 deg (%)", False),
     ("hausdorff_percent_of_diagonal", "Hausdorff (% diag)", False),
+    ("feature_distance_percent_of_diagonal", "feature curves to output (% diag)", False),
     ("seconds", "time (s)", False),
 )
 

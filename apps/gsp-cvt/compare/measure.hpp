@@ -22,6 +22,10 @@ struct Measures {
   double min_angle = 0, mean_min_angle = 0, percent_below_30 = 0, mean_aspect_ratio = 0;
   std::size_t degenerate = 0;
   double hausdorff_percent = NAN;   // NaN: a surface without area
+  // Largest distance from the input's feature curves (creases over 40 degrees, boundaries,
+  // non-manifold edges; cvt::detect_features) to the output, % of the diagonal: how much of a
+  // crease or a corner the remesh cut off. NaN: no feature edge.
+  double feature_distance_percent = NAN;
   // Manifold, oriented, no duplicates, the per-component topology of the input with its
   // non-manifold vertices split (cvt::split_nonmanifold_vertices).
   bool topology_kept = false;
