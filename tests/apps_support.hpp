@@ -82,12 +82,13 @@ struct RunResult {
   std::string out, err;
 };
 
-// Runs `command` (already quoted) under `timeout 5` with stdin closed, capturing the
-// streams into files in `scratch`.
-inline RunResult run(const std::string& command, const ScratchDir& scratch) {
+// Runs `command` (already quoted) under `timeout` with stdin closed, capturing the streams
+// into files in `scratch`. The limit guards against hangs, it measures nothing: 5 s for the
+// quick runs; whole remeshes take a few seconds alone and more on a loaded machine.
+inline RunResult run(const std::string& command, const ScratchDir& scratch, int timeout_s = 5) {
   const fs::path out = scratch / ".stdout", err = scratch / ".stderr";
   const std::string line =
-      "timeout 5 " + command + " < /dev/null > " + quote(out.string()) + " 2> " + quote(err.string());
+      "timeout " + std::to_string(timeout_s) + " " + command + " < /dev/null > " + quote(out.string()) + " 2> " + quote(err.string());
   const int status = std::system(line.c_str());
   RunResult r;
   r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;

@@ -15,13 +15,14 @@ using namespace gsp::test;
 
 const std::string kMesh = std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off";
 const std::string kApp = bin("gsp-cvt");
+constexpr int kRemeshLimit = 60;   // seconds: a hang guard for whole remeshes (2-5 s each)
 
 TEST(CvtApp, RemeshRegionsAndStats) {
   ScratchDir dir("cvt");
   const auto out = dir / "r.obj", regions = dir / "regions.ply";
   const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 600 --iterations 15 --hausdorff-samples 5000 -o " +
                               quote(out.string()) + " --regions " + quote(regions.string()) + " --stats -",
-                          dir);
+                          dir, kRemeshLimit);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const JsonValue stats = parse_json(r.out);
   const double sites = stats["result"]["sites"].num;
@@ -75,21 +76,21 @@ TEST(CvtApp, NoSmoothKeepsTheSites) {
   const auto out = dir / "r.ply";
   const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 300 --iterations 5 --no-smooth --stats - -o " +
                               quote(out.string()),
-                          dir);
+                          dir, kRemeshLimit);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const JsonValue stats = parse_json(r.out);
   EXPECT_FALSE(stats["settings"]["smooth"].b);
   EXPECT_EQ(stats["remesh"]["smoothing_moves"].num, 0);
   EXPECT_EQ(stats["remesh"]["pulls"].num, 0);
   EXPECT_EQ(stats["remesh"]["vertices"].num, stats["result"]["sites"].num);
-  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 300 --smooth-below 0 -o " + quote(out.string()), dir).exit_code,
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 300 --smooth-below 0 -o " + quote(out.string()), dir, kRemeshLimit).exit_code,
             2);   // out of range
 }
 
 TEST(CvtApp, EdgeLengthAndGlb) {
   ScratchDir dir("cvt");
   const auto out = dir / "r.glb";
-  const RunResult r = run(kApp + " " + quote(kMesh) + " --edge-length 5% --iterations 3 -q -o " + quote(out.string()), dir);
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --edge-length 5% --iterations 3 -q -o " + quote(out.string()), dir, kRemeshLimit);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const io::ReadResult mesh = io::read_mesh(out.string());
