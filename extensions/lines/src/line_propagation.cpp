@@ -82,9 +82,8 @@ struct Entry {
 // a non-manifold edge. A wave that loses sight of such a vertex is carried straight on: every
 // unfolding around it agrees, so planes stay exact.
 std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connectivity& conn,
-                                        const std::vector<std::uint8_t>& skipped) {
+                                        const std::vector<bool>& skipped) {
   std::vector<std::uint8_t> boundary_halfedge(3 * mesh.num_faces(), 0);
-  std::vector<bool> skipped_face(skipped.begin(), skipped.end());
   std::vector<Index> nonmanifold;
   for (Index h = 0; h < Index(3 * mesh.num_faces()); ++h) {
     if (skipped[face_of(h)]) continue;
@@ -95,7 +94,7 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connecti
       nonmanifold.push_back(mesh.triangles[face_of(h)][(h + 1) % 3]);
     }
   }
-  std::vector<std::uint8_t> flat = intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped_face, nonmanifold);
+  std::vector<std::uint8_t> flat = intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped, nonmanifold);
   for (std::uint8_t& k : flat) k = k == intrinsic::kFlatVertex;
   return flat;
 }
@@ -117,10 +116,12 @@ class Propagation {
       for (double l : frames_[f].len) total += l, ++edges;
     }
     scale_ = edges ? total / double(edges) : 1.0;
-    flat_ = flat_vertices(mesh, conn_, skipped_);
+    // The shared layer takes the skipped faces as bits (one conversion for both calls).
+    const std::vector<bool> skipped_face(skipped_.begin(), skipped_.end());
+    flat_ = flat_vertices(mesh, conn_, skipped_face);
     bridge_.assign(mesh.num_vertices(), 0);
     // Bridges (gsp/intrinsic/bridge_vertices.hpp) pass their distance on as a point source.
-    for (Index v : intrinsic::bridge_vertices(mesh, conn_, std::vector<bool>(skipped_.begin(), skipped_.end())))
+    for (Index v : intrinsic::bridge_vertices(mesh, conn_, skipped_face))
       bridge_[v] = 1;
     distance_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
     segment_.assign(mesh.num_vertices(), kInvalidIndex);
