@@ -1,6 +1,7 @@
 // gsp-cvt end to end: the remesh and the regions file read back, the stats JSON, the error
 // contract (exit 1 for bad input, 2 for usage errors, nothing left behind).
 #include "apps_support.hpp"
+#include "cvt_components.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/io/mesh_io.hpp>
@@ -97,6 +98,47 @@ TEST(CvtApp, EdgeLengthAndGlb) {
   EXPECT_GT(mesh.mesh.num_faces(), 100u);
 }
 
+// Two spheres and a non-manifold book as a soup (welded by the app): the spheres are
+// remeshed apart, the book is kept and named on stderr; nothing remeshable at all is an error.
+TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {
+  ScratchDir dir("cvt");
+  TriangleMesh m = icosphere(2);
+  add(m, icosphere(2), 0.5, {3, 0, 0});
+  add(m, book(), 1.0, {-4, 0, 0});
+  io::write_mesh((dir / "in.obj").string(), explode(m));
+  const auto out = dir / "r.ply";
+  const RunResult r = run(kApp + " " + quote((dir / "in.obj").string()) + " --weld" +
+                              " --vertices 250 --iterations 5 --no-smooth --stats - -o " + quote(out.string()),
+                          dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("component 2 (3 faces) kept as it is: 1 non-manifold edges, 2 non-manifold vertices"),
+            std::string::npos)
+      << r.err;
+  const JsonValue stats = parse_json(r.out);
+  EXPECT_EQ(stats["remesh"]["components_remeshed"].num, 2);
+  EXPECT_EQ(stats["remesh"]["components_kept"].num, 1);
+  const JsonValue& c = stats["components"];
+  ASSERT_EQ(c.items.size(), 3u);
+  EXPECT_EQ(c.items[0]["outcome"].str, "remeshed");
+  EXPECT_EQ(c.items[1]["outcome"].str, "remeshed");
+  EXPECT_EQ(c.items[2]["outcome"].str, "kept_nonmanifold");
+  // The budget by area (4 : 1 : the book's 1.5 of 6.5 pi + 1.5 in all).
+  EXPECT_NEAR(c.items[0]["sites"].num, 250 * 4 * M_PI / (5 * M_PI + 1.5), 1.0);
+  EXPECT_EQ(stats["topology"]["output"]["components"].num, 3);
+  EXPECT_EQ(stats["topology"]["output"]["euler_characteristic"].num, 2 + 2 + 1);
+  EXPECT_EQ(stats["topology"]["output"]["nonmanifold_edges"].num, 1);   // the book's spine, kept
+
+  io::write_mesh((dir / "book.obj").string(), book());
+  const RunResult bad =
+      run(kApp + " " + quote((dir / "book.obj").string()) + " --vertices 50 -o " + quote((dir / "b.ply").string()), dir);
+  EXPECT_EQ(bad.exit_code, 1);
+  ASSERT_EQ(lines(bad.err).size(), 1u) << bad.err;
+  EXPECT_NE(bad.err.find("no component could be remeshed; component 0 (3 faces): 1 non-manifold edges"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(dir / "b.ply"));
+}
+
 TEST(CvtApp, UsageErrorsExit2) {
   ScratchDir dir("cvt");
   const std::string o = " -o " + quote((dir / "r.obj").string());
@@ -119,7 +161,7 @@ TEST(CvtApp, BadInputExits1) {
   EXPECT_EQ(r.exit_code, 1);
   // More sites than the (split) mesh has vertices: one line naming the input.
   write_file(dir / "tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-  r = run(kApp + " " + quote((dir / "tri.off").string()) + " --vertices 100000 -o " + quote(out.string()), dir);
+  r = run(kApp + " " + quote((dir / "tri.off").string()) + " --vertices 10000000 -o " + quote(out.string()), dir);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
   EXPECT_NE(r.err.find("tri.off"), std::string::npos) << r.err;

@@ -192,7 +192,7 @@ TEST(CvtOptions, ContradictionsThrow) {
   o.over_relaxation = 2.5;
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   o.over_relaxation = 1.0;
-  o.sites = 100000;   // more than the working mesh has vertices
+  o.sites = 100000000;   // more than the working mesh can have vertices (10 splits: ~17 million)
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   TriangleMesh flat = m;
   for (Vec3& p : flat.positions) p.y = 0;   // no area

@@ -6,6 +6,7 @@
 
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/remesh.hpp>
+#include <gsp/cvt/surface.hpp>
 
 namespace gsp::python {
 
@@ -69,14 +70,14 @@ py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& ver
                  int iterations, std::uint64_t seed, bool flip, bool smooth, const py::object& progress) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   const cvt::CvtOptions o = cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", progress, "vertices");
-  cvt::RemeshResult r;
+  cvt::SurfaceRemeshResult r;
   {
     py::gil_scoped_release nogil;
-    const cvt::CvtResult c = cvt::compute_cvt(mesh, o);
-    cvt::RemeshOptions ro;
-    ro.flip_edges = flip;
-    ro.smooth = smooth;
-    r = cvt::restricted_delaunay(c, ro);
+    cvt::SurfaceRemeshOptions so;
+    so.cvt = o;
+    so.remesh.flip_edges = flip;
+    so.remesh.smooth = smooth;
+    r = cvt::remesh_surface(mesh, so);
   }
   return py::make_tuple(to_array(std::move(r.mesh.positions)), to_array(r.mesh.triangles));
 }
@@ -109,8 +110,10 @@ is called per iteration; Ctrl-C stops it.)");
         py::arg("smooth") = true, py::arg("progress") = py::none(),
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
-Exactly one of vertices (about that many output vertices) and edge_length. flip and smooth are
-the angle-raising post-passes. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
+Exactly one of vertices (about that many output vertices) and edge_length. Each connected
+component is remeshed on its own (vertices by area); one that cannot be (non-manifold edges,
+not orientable, too small a share, a remesh without its topology) is returned as it is, as
+gsp-cvt does. flip and smooth are the angle-raising post-passes. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
 }
 
 }  // namespace gsp::python

@@ -1,6 +1,10 @@
 // gsp-cvt-compare: gsp-cvt's remesh and CGAL's isotropic remeshing of the same mesh at the
 // same vertex count, side by side (minimum angle, angles below 30 degrees, aspect ratio,
-// Hausdorff distance, topology, time). GPL because of CGAL; gsp::cvt itself does not use it.
+// Hausdorff distance, topology per component, time). GPL because of CGAL; gsp::cvt itself
+// does not use it. A method that throws is a row with its reason, so a corpus run
+// (scripts/cvt_corpus.py) loses no mesh to one method's failure.
+#include "measure.hpp"
+
 #include <gsp/adapters/cgal.hpp>
 #include <gsp/cli/app.hpp>
 #include <gsp/cli/load.hpp>
@@ -8,6 +12,7 @@
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/remesh.hpp>
+#include <gsp/cvt/surface.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/topology.hpp>
 
@@ -37,6 +42,9 @@ struct Row {
   TriangleMesh mesh;
   double seconds = 0;
   std::string note;
+  std::string error;                  // non-empty: the method failed, nothing else is valid
+  cli::Json phases = cli::Json::object();   // seconds per phase (gsp)
+  cli::Json components = cli::Json::array();  // per input component: outcome and reason (gsp)
 };
 
 double surface_area(const TriangleMesh& m) {
@@ -62,6 +70,7 @@ Row cgal_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) 
     row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     row.mesh = adapters::from_cgal(c.mesh);
     row.note = "target edge " + std::to_string(length) + ", " + std::to_string(o.cgal_iterations) + " iterations";
+    if (!c.skipped_faces.empty()) row.note += ", " + std::to_string(c.skipped_faces.size()) + " input faces refused";
     length *= std::sqrt(double(row.mesh.num_vertices()) / double(wanted));
   }
   return row;
@@ -70,61 +79,89 @@ Row cgal_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) 
 Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   Row row;
   row.method = "gsp-cvt (Lloyd + restricted Delaunay)";
-  cvt::CvtOptions co;
-  co.sites = wanted;
-  co.max_iterations = o.cvt_iterations;
+  cvt::SurfaceRemeshOptions so;
+  so.cvt.sites = wanted;
+  so.cvt.max_iterations = o.cvt_iterations;
   const auto t0 = Clock::now();
-  const cvt::CvtResult r = cvt::compute_cvt(mesh, co);
-  row.mesh = cvt::restricted_delaunay(r).mesh;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
+  row.mesh = r.mesh;
   row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  row.note = std::to_string(r.stats.iterations) + " iterations";
+  row.note = std::to_string(r.cvt_stats.iterations) + " iterations, " + std::to_string(r.remeshed()) + " of " +
+             std::to_string(r.components.size()) + " components remeshed";
+  const cvt::CvtTimings& t = r.cvt_stats.timings;
+  row.phases["subdivide"] = t.subdivide;
+  row.phases["prepare"] = t.prepare;
+  row.phases["initial"] = t.initial;
+  row.phases["propagate"] = t.propagate;
+  row.phases["centroids"] = t.centroids;
+  row.phases["fix"] = t.fix;
+  row.phases["remesh"] = r.remesh_seconds;
+  for (const cvt::ComponentReport& c : r.components) {
+    cli::Json j = cli::Json::object();
+    j["input_faces"] = c.input_faces;
+    j["sites"] = c.sites;
+    j["outcome"] = cvt::outcome_name(c.outcome);
+    j["reason"] = c.reason;
+    row.components.push_back(std::move(j));
+  }
   return row;
+}
+
+// The method's row, or its failure as a row.
+template <class Method>
+Row guarded(const char* name, Method&& method) {
+  try {
+    return method();
+  } catch (const std::exception& e) {
+    Row row;
+    row.method = name;
+    row.error = e.what();
+    return row;
+  }
 }
 
 void run(cli::Context& ctx, const Options& o) {
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
+  ctx.stats()["input_topology"] = cvt_compare::describe_input(in.mesh);
   const TopologyReport ti = analyze_topology(in.mesh, build_connectivity(in.mesh));
   std::vector<Row> rows;
   {
     auto progress = ctx.progress("gsp-cvt");
-    rows.push_back(gsp_remesh(in.mesh, o.vertices, o));
+    rows.push_back(guarded("gsp-cvt", [&] { return gsp_remesh(in.mesh, o.vertices, o); }));
   }
   {
     auto progress = ctx.progress("CGAL");
-    rows.push_back(cgal_remesh(in.mesh, o.vertices, o));
+    rows.push_back(guarded("CGAL isotropic_remeshing", [&] { return cgal_remesh(in.mesh, o.vertices, o); }));
   }
-  std::printf("| method | vertices | min angle | angles < 30 | mean AR | Hausdorff (%% diag) | Euler / loops (input %lld / %zu) | manifold | time (s) |\n",
-              static_cast<long long>(ti.euler_characteristic), ti.boundary_loops);
-  std::printf("|---|---:|---:|---:|---:|---:|---:|:-:|---:|\n");
+  std::printf("| method | vertices | min angle | angles < 30 | Hausdorff (%% diag) | Euler / loops / components (input %lld / %zu / %zu) | manifold | topology per component | time (s) |\n",
+              static_cast<long long>(ti.euler_characteristic), ti.boundary_loops, ti.components);
+  std::printf("|---|---:|---:|---:|---:|---:|:-:|---|---:|\n");
   cli::Json& list = ctx.stats()["rows"] = cli::Json::array();
   for (const Row& r : rows) {
-    const cvt::MeshQuality q = cvt::measure_mesh_quality(r.mesh);
-    cvt::HausdorffOptions ho;
-    ho.samples = o.hausdorff_samples;
-    const cvt::HausdorffDistance h = cvt::hausdorff_distance(in.mesh, r.mesh, ho);
-    const TopologyReport t = analyze_topology(r.mesh, build_connectivity(r.mesh));
-    std::printf("| %s | %zu | %.1f | %.2f%% | %.3f | %.3f | %lld / %zu | %s | %.2f |\n", r.method.c_str(),
-                r.mesh.num_vertices(), q.min_angle, 100 * q.below_30, q.mean_aspect_ratio, 100 * h.relative,
-                static_cast<long long>(t.euler_characteristic), t.boundary_loops, t.is_manifold() ? "yes" : "no",
-                r.seconds);
     cli::Json j = cli::Json::object();
     j["method"] = r.method;
+    if (!r.error.empty()) {
+      j["error"] = r.error;
+      std::printf("| %s | failed: %s |\n", r.method.c_str(), r.error.c_str());
+      list.push_back(std::move(j));
+      continue;
+    }
     j["note"] = r.note;
-    j["vertices"] = r.mesh.num_vertices();
-    j["min_angle"] = q.min_angle;
-    j["mean_min_angle"] = q.mean_min_angle;
-    j["percent_below_30"] = 100 * q.below_30;
-    j["mean_aspect_ratio"] = q.mean_aspect_ratio;
-    j["hausdorff_percent_of_diagonal"] = 100 * h.relative;
-    j["euler_characteristic"] = static_cast<long long>(t.euler_characteristic);
-    j["boundary_loops"] = t.boundary_loops;
-    j["manifold"] = t.is_manifold();
     j["seconds"] = r.seconds;
+    j["phases"] = r.phases;
+    j["components"] = r.components;
+    const cvt_compare::Measures m = cvt_compare::measure_output(in.mesh, r.mesh, o.hausdorff_samples);
+    std::printf("| %s | %zu | %.1f | %.2f%% | %.3f | %lld / %zu / %zu | %s | %s | %.2f |\n", r.method.c_str(),
+                m.topology.vertices, m.min_angle, m.percent_below_30, m.hausdorff_percent,
+                static_cast<long long>(m.topology.euler_characteristic), m.topology.boundary_loops,
+                m.topology.components, m.topology.is_manifold() ? "yes" : "no",
+                m.topology_kept ? "kept" : m.topology_difference.c_str(), r.seconds);
+    j["measures"] = cvt_compare::to_json(m);
     list.push_back(std::move(j));
   }
   if (!o.save_prefix.empty()) {
-    io::write_mesh(o.save_prefix + "-gsp.ply", rows[0].mesh);
-    io::write_mesh(o.save_prefix + "-cgal.ply", rows[1].mesh);
+    if (rows[0].error.empty()) io::write_mesh(o.save_prefix + "-gsp.ply", rows[0].mesh);
+    if (rows[1].error.empty()) io::write_mesh(o.save_prefix + "-cgal.ply", rows[1].mesh);
   }
 }
 

@@ -1,6 +1,7 @@
 // gsp-cvt: geodesic centroidal Voronoi tessellation of a triangle mesh by Lloyd iterations
 // with GSP, and the isotropic remesh it defines (the restricted Delaunay dual: one vertex per
-// site, one triangle where three regions meet).
+// site, one triangle where three regions meet), component by component: what cannot be
+// remeshed as a surface is kept as it is, with a note saying why.
 #include "report.hpp"
 
 #include <gsp/cli/app.hpp>
@@ -9,6 +10,7 @@
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/remesh.hpp>
+#include <gsp/cvt/surface.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/topology.hpp>
 
@@ -84,7 +86,8 @@ void run(cli::Context& ctx, const Options& o) {
   if (!o.regions.empty()) cli::output_format(o.regions, meshes, "--regions");
 
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
-  cvt::CvtOptions co;
+  cvt::SurfaceRemeshOptions so;
+  cvt::CvtOptions& co = so.cvt;
   co.sites = o.vertices;
   co.edge_length = length_arg < 0 ? -length_arg / 100.0 * bounding_box(in.mesh).diagonal() : length_arg;
   co.max_iterations = o.iterations;
@@ -119,43 +122,34 @@ void run(cli::Context& ctx, const Options& o) {
     progress = ctx.progress(label);
     progress->update(info.max_iterations ? double(info.iteration) / info.max_iterations : 1.0);
   };
-  const cvt::CvtResult result = cvt::compute_cvt(in.mesh, co);
-  progress.reset();
-  cvt_app::report_cvt(ctx, result);
-
-  auto dual_scope = ctx.timer().scope("remesh");
-  cvt::RemeshOptions ro;
+  cvt::RemeshOptions& ro = so.remesh;
   ro.flip_edges = !o.no_flip;
   ro.smooth = !o.no_smooth;
   ro.smooth_below_angle = o.smooth_below;
-  const cvt::RemeshResult remesh = cvt::restricted_delaunay(result, ro);
-  dual_scope.stop();
+  const cvt::SurfaceRemeshResult result = cvt::remesh_surface(in.mesh, so);
+  progress.reset();
+  cvt_app::report_cvt(ctx, result);
+  ctx.timer().add("remesh", result.remesh_seconds);
   const TopologyReport topo_in = analyze_topology(in.mesh, build_connectivity(in.mesh));
-  const TopologyReport topo_out = analyze_topology(remesh.mesh, build_connectivity(remesh.mesh));
-  cvt_app::report_remesh(ctx, remesh, topo_in, topo_out);
-  if (topo_in.is_manifold() && (!topo_out.is_manifold() || topo_out.euler_characteristic != topo_in.euler_characteristic ||
-                                topo_out.boundary_loops != topo_in.boundary_loops))
-    ctx.note("the remesh does not have the input's topology (Euler characteristic " +
-             std::to_string(topo_out.euler_characteristic) + " vs " + std::to_string(topo_in.euler_characteristic) +
-             ", boundary loops " + std::to_string(topo_out.boundary_loops) + " vs " +
-             std::to_string(topo_in.boundary_loops) + (topo_out.is_manifold() ? "" : ", non-manifold") +
-             "): try more vertices or iterations");
+  const TopologyReport topo_out = analyze_topology(result.mesh, build_connectivity(result.mesh));
+  cvt_app::report_remesh(ctx, result, topo_in, topo_out);
+  cvt_app::note_kept_components(ctx, result);
 
   if (ctx.stats_requested()) {
     auto q = ctx.timer().scope("quality");
     cvt::HausdorffOptions ho;
     ho.samples = o.hausdorff_samples;
     ho.seed = o.seed;
-    const cvt::MeshQuality mq = cvt::measure_mesh_quality(remesh.mesh);
-    const cvt::HausdorffDistance hd = cvt::hausdorff_distance(in.mesh, remesh.mesh, ho);
+    const cvt::MeshQuality mq = cvt::measure_mesh_quality(result.mesh);
+    const cvt::HausdorffDistance hd = cvt::hausdorff_distance(in.mesh, result.mesh, ho);
     cvt_app::report_quality(ctx, mq, hd);
   }
 
   io::WriteOptions wo;
   wo.ascii = o.ascii;
   ctx.timer().time("write", [&] {
-    io::write_mesh(o.output, remesh.mesh, {}, wo);
-    if (!o.regions.empty()) cvt_app::write_regions(o.regions, in, result);
+    io::write_mesh(o.output, result.mesh, {}, wo);
+    if (!o.regions.empty()) cvt_app::write_regions(o.regions, in, result.vertex_label);
   });
 }
 

@@ -1,5 +1,6 @@
 #include "report.hpp"
 
+#include <gsp/errors.hpp>
 #include <gsp/io/mesh_io.hpp>
 
 #include <cstdint>
@@ -45,10 +46,10 @@ std::array<std::uint8_t, 4> region_colour(Index label) {
 
 }  // namespace
 
-void report_cvt(cli::Context& ctx, const cvt::CvtResult& cvt) {
-  const cvt::CvtStats& s = cvt.stats;
+void report_cvt(cli::Context& ctx, const cvt::SurfaceRemeshResult& cvt) {
+  const cvt::CvtStats& s = cvt.cvt_stats;
   cli::Json& res = ctx.stats()["result"];
-  res["sites"] = cvt.sites.size();
+  res["sites"] = cvt.sites;
   res["iterations"] = s.iterations;
   res["converged"] = s.converged;
   res["energy"] = cvt.energy;
@@ -76,26 +77,62 @@ void report_cvt(cli::Context& ctx, const cvt::CvtResult& cvt) {
   t.add("fix_regions", s.timings.fix);
 }
 
-void report_remesh(cli::Context& ctx, const cvt::RemeshResult& remesh, const TopologyReport& input,
+void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, const TopologyReport& input,
                    const TopologyReport& output) {
   cli::Json& res = ctx.stats()["remesh"];
   res["vertices"] = remesh.mesh.num_vertices();
   res["triangles"] = remesh.mesh.num_faces();
-  res["junctions"] = remesh.stats.junctions;
-  res["junctions_over_three"] = remesh.stats.junctions_over_three;
-  res["duplicate_triangles"] = remesh.stats.duplicate_triangles;
-  res["skipped_junctions"] = remesh.stats.skipped_junctions;
-  res["unused_sites"] = remesh.stats.unused_sites;
-  res["flips"] = remesh.stats.flips;
-  res["smoothing_moves"] = remesh.stats.smoothing_moves;
-  res["smoothing_boundary_moves"] = remesh.stats.smoothing_boundary_moves;
-  res["boundary_collapses"] = remesh.stats.boundary_collapses;
-  res["boundary_splits"] = remesh.stats.boundary_splits;
-  res["boundary_snaps"] = remesh.stats.boundary_snaps;
-  res["pulls"] = remesh.stats.pulls;
-  res["far_point_insertions"] = remesh.stats.far_point_insertions;
+  res["components_remeshed"] = remesh.remeshed();
+  res["components_kept"] = remesh.components.size() - remesh.remeshed();
+  res["vertices_split"] = remesh.vertices_split;
+  res["junctions"] = remesh.remesh_stats.junctions;
+  res["junctions_over_three"] = remesh.remesh_stats.junctions_over_three;
+  res["duplicate_triangles"] = remesh.remesh_stats.duplicate_triangles;
+  res["skipped_junctions"] = remesh.remesh_stats.skipped_junctions;
+  res["unused_sites"] = remesh.remesh_stats.unused_sites;
+  res["flips"] = remesh.remesh_stats.flips;
+  res["smoothing_moves"] = remesh.remesh_stats.smoothing_moves;
+  res["smoothing_boundary_moves"] = remesh.remesh_stats.smoothing_boundary_moves;
+  res["boundary_collapses"] = remesh.remesh_stats.boundary_collapses;
+  res["boundary_splits"] = remesh.remesh_stats.boundary_splits;
+  res["boundary_snaps"] = remesh.remesh_stats.boundary_snaps;
+  res["pulls"] = remesh.remesh_stats.pulls;
+  res["far_point_insertions"] = remesh.remesh_stats.far_point_insertions;
   ctx.stats()["topology"]["input"] = topology_json(input);
   ctx.stats()["topology"]["output"] = topology_json(output);
+  cli::Json& list = ctx.stats()["components"] = cli::Json::array();
+  for (const cvt::ComponentReport& c : remesh.components) {
+    cli::Json j = cli::Json::object();
+    j["input_vertices"] = c.input_vertices;
+    j["input_faces"] = c.input_faces;
+    j["area"] = c.area;
+    j["euler_characteristic"] = static_cast<long long>(c.euler_characteristic);
+    j["boundary_loops"] = c.boundary_loops;
+    j["sites"] = c.sites;
+    j["faces_flipped"] = c.faces_flipped;
+    j["output_vertices"] = c.output_vertices;
+    j["output_faces"] = c.output_faces;
+    j["outcome"] = cvt::outcome_name(c.outcome);
+    j["reason"] = c.reason;
+    list.push_back(std::move(j));
+  }
+}
+
+void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) {
+  const std::size_t kept = r.components.size() - r.remeshed();
+  std::size_t noted = 0;
+  for (std::size_t i = 0; i < r.components.size(); ++i) {
+    const cvt::ComponentReport& c = r.components[i];
+    if (c.outcome == cvt::ComponentOutcome::remeshed) continue;
+    const std::string what = "component " + std::to_string(i) + " (" + std::to_string(c.input_faces) + " faces)";
+    if (kept == r.components.size())
+      throw Error("no component could be remeshed; " + what + ": " + c.reason + (kept > 1 ? "; ..." : ""));
+    if (++noted <= 20) ctx.note(what + " kept as it is: " + c.reason);
+  }
+  if (r.vertices_split)
+    ctx.note(std::to_string(r.vertices_split) +
+             " vertices where fans of faces only touched were split (one per fan) before remeshing");
+  if (noted > 20) ctx.note(std::to_string(noted - 20) + " more components kept as they are (--stats lists them)");
 }
 
 void report_quality(cli::Context& ctx, const cvt::MeshQuality& q, const cvt::HausdorffDistance& h) {
@@ -120,8 +157,8 @@ void report_quality(cli::Context& ctx, const cvt::MeshQuality& q, const cvt::Hau
   hd["percent_of_diagonal"] = 100.0 * h.relative;
 }
 
-void write_regions(const std::string& path, const cli::LoadedMesh& in, const cvt::CvtResult& cvt) {
-  const std::vector<Index> labels = in.to_file_order(cvt.vertex_label);
+void write_regions(const std::string& path, const cli::LoadedMesh& in, const std::vector<Index>& vertex_label) {
+  const std::vector<Index> labels = in.to_file_order(vertex_label);
   io::VertexAttributes attributes;
   std::vector<std::int32_t> label(labels.size());
   for (std::size_t i = 0; i < labels.size(); ++i) {

@@ -393,6 +393,14 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   while (levels < options.max_subdivisions &&
          double(mesh.num_faces()) * std::pow(4.0, levels) < double(options.min_faces_per_site) * double(n))
     ++levels;
+  // Too many sites for the split mesh even with every edge counted apart (E <= 3F): say so
+  // before splitting, which at 10 levels of a large input would take long.
+  const double k = std::pow(2.0, levels) - 1;
+  const double vertex_bound = double(mesh.num_vertices()) + 3.0 * double(mesh.num_faces()) * k +
+                              double(mesh.num_faces()) * k * (k - 1) / 2;
+  if (double(n) > vertex_bound)
+    throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
+                       " times) has at most " + std::to_string(std::size_t(vertex_bound)) + " vertices");
   out.working = subdivide(mesh, levels);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +

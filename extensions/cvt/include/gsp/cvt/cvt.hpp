@@ -52,7 +52,10 @@ struct CvtOptions {
   InitialSites initial = InitialSites::poisson;
   std::uint64_t seed = 1;
   std::size_t min_faces_per_site = 24;   // working-mesh resolution (see above); 0: no split
-  int max_subdivisions = 3;              // at most 4^3 = 64 faces per input face
+  // The faces-per-site rule above stops the splitting first (at most 4 * min_faces_per_site
+  // faces per site); the cap only matters for inputs of very few faces (CAD parts, a lone
+  // triangle), which need many levels before a region is more than a few faces wide.
+  int max_subdivisions = 10;
   // Detect regions that are not a single disk (several components, or one that wraps around a
   // handle) and add a site there; also keep at least 3 regions along every boundary loop and
   // one run of regions per loop (a region touching a loop twice gets a second site).

@@ -1,0 +1,76 @@
+#pragma once
+// Remeshing a whole input, whatever it is: every connected component on its own (after the
+// caller's welding, and after splitting vertices where fans of faces only touch, which
+// makes such a component the manifold surface it describes: split_nonmanifold_vertices),
+// with a share of the vertex budget proportional to its area. What cannot
+// be remeshed as a surface is kept as it is and reported, per component, with the reason:
+// components too small for the budget, non-manifold or non-orientable ones, and those whose
+// remesh did not come out a manifold with their Euler characteristic and boundary loops.
+// Inconsistently oriented components are oriented first (the majority's orientation kept).
+//
+//   gsp::cvt::SurfaceRemeshOptions o;
+//   o.cvt.sites = 5000;
+//   gsp::cvt::SurfaceRemeshResult r = gsp::cvt::remesh_surface(mesh, o);
+//   r.mesh; for (auto& c : r.components) if (c.outcome != ComponentOutcome::remeshed) ... c.reason
+#include <gsp/cvt/cvt.hpp>
+#include <gsp/cvt/remesh.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gsp::cvt {
+
+struct SurfaceRemeshOptions {
+  CvtOptions cvt;   // sites: the budget of the whole mesh; or edge_length, for every component
+  RemeshOptions remesh;
+  // A component whose share of the budget is below this many sites is kept as it is: the dual
+  // of so few regions cannot be trusted to have the component's topology (a closed surface
+  // needs at least 4, a torus many more).
+  std::size_t min_component_sites = 20;
+};
+
+enum class ComponentOutcome {
+  remeshed,
+  kept_small,          // share of the budget below min_component_sites
+  kept_nonmanifold,    // non-manifold edges or vertices
+  kept_nonorientable,  // no consistent orientation exists
+  kept_topology,       // the remesh was not a manifold with the component's topology
+  kept_error,          // the CVT or the dual threw (reason: its message)
+};
+const char* outcome_name(ComponentOutcome o);
+
+struct ComponentReport {
+  std::size_t input_vertices = 0, input_faces = 0;
+  double area = 0;
+  std::int64_t euler_characteristic = 0;   // of the input component
+  std::size_t boundary_loops = 0;
+  std::size_t sites = 0;                   // asked for (0 when kept before the CVT)
+  std::size_t faces_flipped = 0;           // by the orientation fix
+  std::size_t output_vertices = 0, output_faces = 0;
+  ComponentOutcome outcome = ComponentOutcome::remeshed;
+  std::string reason;                      // empty when remeshed
+  double cvt_seconds = 0, remesh_seconds = 0;
+};
+
+struct SurfaceRemeshResult {
+  TriangleMesh mesh;                       // remeshed components, then kept ones, in component order
+  std::vector<ComponentReport> components; // by first input face, of the input with its fans split
+  std::vector<Index> vertex_label;         // per input vertex: its region (index into all sites), or kInvalidIndex
+  std::size_t sites = 0;                   // over all remeshed components
+  double energy = 0;
+  // The total energy per iteration; a component that stopped earlier counts with its last
+  // energy (so the curve stays non-increasing, like each component's).
+  std::vector<double> energy_curve;
+  double area = 0;                         // of the whole input
+  std::size_t vertices_split = 0;          // input vertices where fans only touched (split_nonmanifold_vertices)
+  CvtStats cvt_stats;                      // summed (iterations: the largest; converged: all)
+  RemeshStats remesh_stats;                // summed
+  double remesh_seconds = 0;               // the duals and their post-passes
+  std::size_t remeshed() const;
+};
+
+// Throws InvalidInput for contradictory options (as compute_cvt) or a mesh without area.
+SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemeshOptions& options);
+
+}  // namespace gsp::cvt

@@ -1,0 +1,215 @@
+#include <gsp/cvt/components.hpp>
+#include <gsp/cvt/surface.hpp>
+#include <gsp/errors.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+#include <utility>
+
+namespace gsp::cvt {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
+  sum.iterations = std::max(sum.iterations, s.iterations);
+  sum.rejected_steps += s.rejected_steps;
+  sum.initial_sites += s.initial_sites;
+  sum.sites_added += s.sites_added;
+  sum.sites_relocated += s.sites_relocated;
+  sum.split_regions += s.split_regions;
+  sum.nondisk_regions += s.nondisk_regions;
+  sum.junction_fixes += s.junction_fixes;
+  sum.working_faces += s.working_faces;
+  sum.subdivisions = std::max(sum.subdivisions, s.subdivisions);
+  sum.bisections += s.bisections;
+  sum.converged = (first || sum.converged) && s.converged;
+  sum.update_steps += s.update_steps;
+  sum.propagations += s.propagations;
+  sum.timings.subdivide += s.timings.subdivide;
+  sum.timings.prepare += s.timings.prepare;
+  sum.timings.initial += s.timings.initial;
+  sum.timings.propagate += s.timings.propagate;
+  sum.timings.centroids += s.timings.centroids;
+  sum.timings.fix += s.timings.fix;
+}
+
+void add_stats(RemeshStats& sum, const RemeshStats& s) {
+  sum.junctions += s.junctions;
+  sum.junctions_over_three += s.junctions_over_three;
+  sum.duplicate_triangles += s.duplicate_triangles;
+  sum.skipped_junctions += s.skipped_junctions;
+  sum.unused_sites += s.unused_sites;
+  sum.flips += s.flips;
+  sum.smoothing_moves += s.smoothing_moves;
+  sum.smoothing_boundary_moves += s.smoothing_boundary_moves;
+  sum.boundary_collapses += s.boundary_collapses;
+  sum.boundary_splits += s.boundary_splits;
+  sum.boundary_snaps += s.boundary_snaps;
+  sum.pulls += s.pulls;
+  sum.far_point_insertions += s.far_point_insertions;
+}
+
+// The input's own faces `faces` as a mesh (what a kept component writes: its vertices not
+// split, so no two of them share a position).
+TriangleMesh input_faces(const TriangleMesh& mesh, const std::vector<Index>& faces) {
+  TriangleMesh m;
+  std::unordered_map<Index, Index> local;
+  for (Index f : faces) {
+    Triangle t;
+    for (int k = 0; k < 3; ++k) {
+      const Index v = mesh.triangles[f][k];
+      auto [it, inserted] = local.try_emplace(v, Index(m.positions.size()));
+      if (inserted) m.positions.push_back(mesh.positions[v]);
+      t[k] = it->second;
+    }
+    m.triangles.push_back(t);
+  }
+  return m;
+}
+
+// sum[i] += curve[i], both padded with their last value.
+void add_curve(std::vector<double>& sum, const std::vector<double>& curve) {
+  if (curve.empty()) return;
+  const double sum_last = sum.empty() ? 0.0 : sum.back();
+  const std::size_t n = std::max(sum.size(), curve.size());
+  sum.resize(n, sum_last);
+  for (std::size_t i = 0; i < n; ++i) sum[i] += curve[std::min(i, curve.size() - 1)];
+}
+
+void append(TriangleMesh& out, const TriangleMesh& piece) {
+  const Index offset = Index(out.positions.size());
+  out.positions.insert(out.positions.end(), piece.positions.begin(), piece.positions.end());
+  for (const Triangle& t : piece.triangles) out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+}
+
+// The component's sites: its share of the budget by area, or the count of an equilateral
+// triangulation of its area at the edge length (compute_cvt's conversion).
+std::size_t component_sites(const CvtOptions& o, double area, double total_area) {
+  if (o.sites > 0) return std::size_t(std::llround(double(o.sites) * area / total_area));
+  return std::size_t(std::llround(2.0 * area / (std::sqrt(3.0) * o.edge_length * o.edge_length)));
+}
+
+// Orients the component alike, keeping the orientation most of its faces had (so a mesh with
+// a few flipped faces keeps its normals). Returns the faces whose orientation changed.
+std::size_t orient_by_majority(TriangleMesh& m) {
+  const std::int64_t flipped = orient_consistently(m);
+  if (2 * std::size_t(flipped) <= m.num_faces()) return std::size_t(flipped);
+  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+  return m.num_faces() - std::size_t(flipped);
+}
+
+}  // namespace
+
+const char* outcome_name(ComponentOutcome o) {
+  switch (o) {
+    case ComponentOutcome::remeshed: return "remeshed";
+    case ComponentOutcome::kept_small: return "kept_small";
+    case ComponentOutcome::kept_nonmanifold: return "kept_nonmanifold";
+    case ComponentOutcome::kept_nonorientable: return "kept_nonorientable";
+    case ComponentOutcome::kept_topology: return "kept_topology";
+    case ComponentOutcome::kept_error: return "kept_error";
+  }
+  return "?";
+}
+
+std::size_t SurfaceRemeshResult::remeshed() const {
+  return std::size_t(std::count_if(components.begin(), components.end(),
+                                   [](const ComponentReport& c) { return c.outcome == ComponentOutcome::remeshed; }));
+}
+
+SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemeshOptions& options) {
+  validate(mesh);
+  const CvtOptions& co = options.cvt;
+  if ((co.sites > 0) == (co.edge_length > 0)) throw InvalidInput("cvt: give exactly one of sites and edge_length");
+  if (co.edge_length > 0 && !std::isfinite(co.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
+  // The surface the input describes: one vertex per fan where fans touch at a vertex.
+  const VertexSplit fans = split_nonmanifold_vertices(mesh);
+  const ComponentSplit split = split_components(fans.mesh);
+  std::vector<ComponentTopology> topology;
+  double total_area = 0;
+  for (const TriangleMesh& c : split.meshes) {
+    topology.push_back(component_topology(c));
+    total_area += topology.back().area;
+  }
+  if (!(total_area > 0)) throw InvalidInput("cvt: the mesh has no area");
+
+  SurfaceRemeshResult out;
+  out.area = total_area;
+  out.vertices_split = fans.split;
+  out.vertex_label.assign(mesh.num_vertices(), kInvalidIndex);
+  std::vector<TriangleMesh> kept;
+  bool first = true;
+  for (std::size_t ci = 0; ci < split.meshes.size(); ++ci) {
+    const TriangleMesh& input = split.meshes[ci];
+    const TopologyReport& t = topology[ci].report;
+    ComponentReport rep;
+    rep.input_vertices = input.num_vertices();
+    rep.input_faces = input.num_faces();
+    rep.area = topology[ci].area;
+    rep.euler_characteristic = t.euler_characteristic;
+    rep.boundary_loops = t.boundary_loops;
+    const std::size_t n = component_sites(co, rep.area, total_area);
+    auto keep = [&](ComponentOutcome why, std::string reason) {
+      rep.outcome = why;
+      rep.reason = std::move(reason);
+      rep.output_vertices = input.num_vertices();
+      rep.output_faces = input.num_faces();
+      kept.push_back(input_faces(mesh, split.face_ids[ci]));
+    };
+    if (!t.is_manifold()) {
+      keep(ComponentOutcome::kept_nonmanifold, std::to_string(t.nonmanifold_edges) + " non-manifold edges, " +
+                                                   std::to_string(t.nonmanifold_vertices) + " non-manifold vertices");
+    } else if (!topology[ci].orientable) {
+      keep(ComponentOutcome::kept_nonorientable, "its faces cannot be oriented alike");
+    } else if (n < options.min_component_sites) {
+      keep(ComponentOutcome::kept_small, "its share of the budget is " + std::to_string(n) + " sites (fewer than " +
+                                             std::to_string(options.min_component_sites) + ")");
+    } else {
+      TriangleMesh oriented = input;
+      rep.faces_flipped = orient_by_majority(oriented);
+      rep.sites = n;
+      try {
+        CvtOptions c = co;
+        c.sites = n;
+        c.edge_length = 0;
+        auto t0 = Clock::now();
+        const CvtResult cvt = compute_cvt(oriented, c);
+        rep.cvt_seconds = seconds_since(t0);
+        t0 = Clock::now();
+        RemeshResult r = restricted_delaunay(cvt, options.remesh);
+        rep.remesh_seconds = seconds_since(t0);
+        out.remesh_seconds += rep.remesh_seconds;
+        std::string why;
+        if (!same_topology_per_component(oriented, r.mesh, &why)) {
+          keep(ComponentOutcome::kept_topology, "the remesh had " + why);
+        } else {
+          for (std::size_t v = 0; v < input.num_vertices(); ++v)
+            if (cvt.vertex_label[v] != kInvalidIndex)
+              out.vertex_label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + cvt.vertex_label[v]);
+          out.sites += cvt.sites.size();
+          out.energy += cvt.energy;
+          add_curve(out.energy_curve, cvt.energy_curve);
+          add_stats(out.cvt_stats, cvt.stats, first);
+          add_stats(out.remesh_stats, r.stats);
+          first = false;
+          rep.output_vertices = r.mesh.num_vertices();
+          rep.output_faces = r.mesh.num_faces();
+          append(out.mesh, r.mesh);
+        }
+      } catch (const Error& e) {
+        keep(ComponentOutcome::kept_error, e.what());
+      }
+    }
+    out.components.push_back(std::move(rep));
+  }
+  for (const TriangleMesh& k : kept) append(out.mesh, k);
+  return out;
+}
+
+}  // namespace gsp::cvt

@@ -1,0 +1,61 @@
+// gsp::cvt component helpers: the split into components, per-component topology and
+// orientability, consistent orientation, duplicate vertices, the per-component comparison.
+#include "cvt_components.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/cvt/components.hpp>
+#include <gsp/topology.hpp>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace gsp;
+using test::add;
+using test::moebius;
+
+TEST(CvtComponents, SplitCountsAndTopology) {
+  TriangleMesh m = test::icosphere(1);
+  add(m, test::grid(3), 1.0, {5, 0, 0});
+  add(m, test::book(), 1.0, {-5, 0, 0});
+  const cvt::ComponentSplit s = cvt::split_components(m);
+  ASSERT_EQ(s.meshes.size(), 3u);
+  EXPECT_EQ(s.meshes[0].num_faces(), 80u);
+  EXPECT_EQ(s.meshes[1].num_vertices(), 16u);
+  EXPECT_EQ(s.meshes[2].num_faces(), 3u);
+  EXPECT_EQ(s.face_ids[2][0], 80u + 18u);
+  EXPECT_EQ(s.vertex_ids[1][0], 42u);
+  const cvt::ComponentTopology sphere = cvt::component_topology(s.meshes[0]);
+  EXPECT_EQ(sphere.report.euler_characteristic, 2);
+  EXPECT_TRUE(sphere.orientable);
+  const cvt::ComponentTopology grid = cvt::component_topology(s.meshes[1]);
+  EXPECT_EQ(grid.report.boundary_loops, 1u);
+  EXPECT_NEAR(grid.area, 9.0, 1e-12);
+  EXPECT_FALSE(cvt::component_topology(s.meshes[2]).report.is_manifold());
+}
+
+TEST(CvtComponents, OrientationAndDuplicates) {
+  TriangleMesh t = test::flipped_face_tetrahedron();
+  EXPECT_EQ(cvt::orient_consistently(t), 1);   // the reversed face, against the first face's choice
+  EXPECT_EQ(analyze_topology(t, build_connectivity(t)).inconsistent_edges, 0u);
+  TriangleMesh mo = moebius(12);
+  const TriangleMesh before = mo;
+  EXPECT_EQ(cvt::orient_consistently(mo), -1);
+  EXPECT_EQ(mo.triangles, before.triangles);   // left as it was
+  EXPECT_FALSE(cvt::component_topology(mo).orientable);
+
+  TriangleMesh d = test::quad();
+  EXPECT_EQ(cvt::duplicate_vertices(d), 0u);
+  d.positions.push_back(d.positions[2]);   // a second component with a corner on vertex 2
+  d.positions.push_back({3, 0, 0});
+  d.positions.push_back({3, 1, 0});
+  d.triangles.push_back({4, 5, 6});
+  EXPECT_EQ(cvt::duplicate_vertices(d), 1u);
+  std::string why;
+  EXPECT_FALSE(cvt::same_topology_per_component(test::quad(), d, &why));
+  EXPECT_EQ(why, "1 duplicate vertices");
+  EXPECT_TRUE(cvt::same_topology_per_component(test::quad(), test::grid(2), &why));
+  EXPECT_FALSE(cvt::same_topology_per_component(test::icosphere(1), test::grid(2), &why));
+}
+
+}  // namespace

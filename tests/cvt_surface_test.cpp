@@ -1,0 +1,162 @@
+// gsp::cvt::remesh_surface on inputs of several components (closed, open, non-manifold,
+// inconsistently oriented, non-orientable, tiny).
+#include "cvt_components.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/cvt/components.hpp>
+#include <gsp/cvt/surface.hpp>
+#include <gsp/errors.hpp>
+#include <gsp/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+using namespace gsp;
+using cvt::ComponentOutcome;
+using test::add;
+using test::moebius;
+
+double signed_volume(const TriangleMesh& m) {
+  double v = 0;
+  for (const Triangle& t : m.triangles) v += dot(m.positions[t[0]], cross(m.positions[t[1]], m.positions[t[2]])) / 6;
+  return v;
+}
+
+void expect_clean(const TriangleMesh& m) {
+  const TopologyReport t = analyze_topology(m, build_connectivity(m));
+  EXPECT_EQ(t.nonmanifold_edges, 0u);
+  EXPECT_EQ(t.nonmanifold_vertices, 0u);
+  EXPECT_EQ(t.inconsistent_edges, 0u);
+  EXPECT_EQ(cvt::duplicate_vertices(m), 0u);
+}
+
+// Two spheres of areas 4 pi and pi: each remeshed alone, the budget split 4:1.
+TEST(CvtSurface, TwoClosedComponentsShareTheBudgetByArea) {
+  TriangleMesh m = test::icosphere(3);
+  add(m, test::icosphere(3), 0.5, {3, 0, 0});
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 500;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 2u);
+  EXPECT_EQ(r.remeshed(), 2u);
+  EXPECT_EQ(r.components[0].sites, 400u);
+  EXPECT_EQ(r.components[1].sites, 100u);
+  EXPECT_NEAR(double(r.components[0].output_vertices), 400.0, 20.0);
+  EXPECT_NEAR(double(r.components[1].output_vertices), 100.0, 8.0);
+  expect_clean(r.mesh);
+  std::string why;
+  EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
+  const TopologyReport t = analyze_topology(r.mesh, build_connectivity(r.mesh));
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.euler_characteristic, 4);
+  EXPECT_GT(signed_volume(r.mesh), 0.9 * (4.0 / 3.0) * M_PI * 1.125);   // both outward
+  EXPECT_EQ(r.sites, r.components[0].output_vertices + r.components[1].output_vertices -
+                         r.remesh_stats.far_point_insertions - r.remesh_stats.boundary_splits +
+                         r.remesh_stats.boundary_collapses);
+}
+
+// An open square beside a sphere: the square keeps its one boundary loop; a non-manifold book
+// and a tiny triangle are kept as they are, each with its reason.
+TEST(CvtSurface, OpenNonManifoldAndTinyComponents) {
+  TriangleMesh m = test::icosphere(3);
+  add(m, test::grid(8), 0.5, {3, 0, 0});          // area 16
+  add(m, test::book(), 1.0, {-4, 0, 0});
+  add(m, test::single_triangle(), 0.05, {0, 4, 0});
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 600;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 4u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed);
+  EXPECT_EQ(r.components[1].outcome, ComponentOutcome::remeshed) << r.components[1].reason;
+  EXPECT_EQ(r.components[1].boundary_loops, 1u);
+  EXPECT_EQ(r.components[2].outcome, ComponentOutcome::kept_nonmanifold);
+  EXPECT_EQ(r.components[2].reason, "1 non-manifold edges, 2 non-manifold vertices");
+  EXPECT_EQ(r.components[3].outcome, ComponentOutcome::kept_small);
+  EXPECT_EQ(r.components[3].sites, 0u);
+  EXPECT_EQ(r.components[3].output_faces, 1u);
+
+  // The kept components are the last faces, as in the input.
+  const std::size_t nf = r.mesh.num_faces();
+  ASSERT_GE(nf, 4u);
+  const Vec3 tip = r.mesh.positions[r.mesh.triangles[nf - 1][1]];
+  EXPECT_NEAR(tip.x, 0.05, 1e-12);
+  EXPECT_NEAR(tip.y, 4.0, 1e-12);
+  const TopologyReport t = analyze_topology(r.mesh, build_connectivity(r.mesh));
+  EXPECT_EQ(t.components, 4u);
+  EXPECT_EQ(t.nonmanifold_edges, 1u);   // the book's spine, reported, not remeshed
+  EXPECT_EQ(t.boundary_loops, 3u);      // square, book, triangle
+  EXPECT_EQ(t.euler_characteristic, 2 + 1 + 1 + 1);
+  EXPECT_EQ(cvt::duplicate_vertices(r.mesh), 0u);
+}
+
+// A sphere with every seventh face reversed is oriented by its majority and remeshed.
+TEST(CvtSurface, InconsistentOrientationIsFixed) {
+  TriangleMesh m = test::icosphere(3);
+  std::size_t reversed = 0;
+  for (std::size_t f = 0; f < m.num_faces(); f += 7, ++reversed) std::swap(m.triangles[f][1], m.triangles[f][2]);
+  ASSERT_GT(analyze_topology(m, build_connectivity(m)).inconsistent_edges, 0u);
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 300;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed);
+  EXPECT_EQ(r.components[0].faces_flipped, reversed);
+  expect_clean(r.mesh);
+  EXPECT_EQ(analyze_topology(r.mesh, build_connectivity(r.mesh)).euler_characteristic, 2);
+  EXPECT_GT(signed_volume(r.mesh), 0.9 * (4.0 / 3.0) * M_PI);
+}
+
+// Two spheres touching at one vertex (a non-manifold vertex, edges all manifold): split there
+// and remeshed as two closed surfaces.
+TEST(CvtSurface, FansTouchingAtAVertexAreSplit) {
+  TriangleMesh m = test::icosphere(2);
+  const TriangleMesh other = test::icosphere(2);
+  // The second sphere's vertex at -p0 (icospheres are centrally symmetric) lands on p0.
+  const Vec3 p0 = m.positions[0];
+  Index antipode = 0;
+  for (Index v = 0; v < other.num_vertices(); ++v)
+    if (distance(other.positions[v], -1.0 * p0) < distance(other.positions[antipode], -1.0 * p0)) antipode = v;
+  ASSERT_LT(distance(other.positions[antipode], -1.0 * p0), 1e-12);
+  const Index joint = Index(m.positions.size()) + antipode;
+  add(m, other, 1.0, 2.0 * p0);
+  for (Triangle& t : m.triangles)
+    for (Index& v : t)
+      if (v == joint) v = 0;
+  ASSERT_EQ(analyze_topology(m, build_connectivity(m)).nonmanifold_vertices, 1u);
+  const cvt::VertexSplit split = cvt::split_nonmanifold_vertices(m);
+  EXPECT_EQ(split.split, 1u);
+  EXPECT_EQ(split.mesh.num_vertices(), m.num_vertices() + 1);   // the unused joint stays, one copy added
+  EXPECT_EQ(split.vertex_source.back(), 0u);
+  EXPECT_EQ(analyze_topology(split.mesh, build_connectivity(split.mesh)).components, 2u);
+
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 300;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  EXPECT_EQ(r.vertices_split, 1u);
+  ASSERT_EQ(r.components.size(), 2u);
+  EXPECT_EQ(r.remeshed(), 2u);
+  expect_clean(r.mesh);
+  const TopologyReport t = analyze_topology(r.mesh, build_connectivity(r.mesh));
+  EXPECT_EQ(t.components, 2u);
+  EXPECT_EQ(t.euler_characteristic, 4);
+  EXPECT_NE(r.vertex_label[0], kInvalidIndex);
+}
+
+TEST(CvtSurface, NonOrientableKeptAndOptionsChecked) {
+  TriangleMesh m = moebius(40);
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 200;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::kept_nonorientable);
+  ASSERT_EQ(r.mesh.num_faces(), m.num_faces());   // the same triangles (renumbered vertices)
+  for (std::size_t f = 0; f < m.num_faces(); ++f)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(r.mesh.positions[r.mesh.triangles[f][k]], m.positions[m.triangles[f][k]]);
+  o.cvt.edge_length = 0.1;   // both given
+  EXPECT_THROW(cvt::remesh_surface(m, o), InvalidInput);
+}
+
+}  // namespace
