@@ -109,7 +109,7 @@ TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {
   const auto out = dir / "r.ply";
   const RunResult r = run(kApp + " " + quote((dir / "in.obj").string()) + " --weld" +
                               " --vertices 250 --iterations 5 --no-smooth --stats - -o " + quote(out.string()),
-                          dir);
+                          dir, kRemeshLimit);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("component 2 (3 faces) kept as it is: 1 non-manifold edges, 2 non-manifold vertices"),
             std::string::npos)
@@ -130,7 +130,7 @@ TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {
 
   io::write_mesh((dir / "book.obj").string(), book());
   const RunResult bad =
-      run(kApp + " " + quote((dir / "book.obj").string()) + " --vertices 50 -o " + quote((dir / "b.ply").string()), dir);
+      run(kApp + " " + quote((dir / "book.obj").string()) + " --vertices 50 -o " + quote((dir / "b.ply").string()), dir, kRemeshLimit);
   EXPECT_EQ(bad.exit_code, 1);
   ASSERT_EQ(lines(bad.err).size(), 1u) << bad.err;
   EXPECT_NE(bad.err.find("no component could be remeshed; component 0 (3 faces): 1 non-manifold edges"),

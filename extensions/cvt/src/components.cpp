@@ -158,7 +158,7 @@ VertexSplit split_nonmanifold_vertices(const TriangleMesh& mesh) {
   std::unordered_map<Index, Index> copy_of_root;
   for (Index c = 0; c < 3 * nf; ++c) {
     const Triangle& t = mesh.triangles[c / 3];
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;   // a degenerate face stays as it is
+    if (repeats_vertex(t)) continue;   // a degenerate face stays as it is
     const Index v = t[c % 3];
     if (on_nonmanifold_edge[v]) continue;
     const Index root = find_root(parent, c);
