@@ -36,7 +36,7 @@ using namespace gsp;
 
 TEST(CvtRobustness, CadMeshesRunToTheEnd) {
   // Non-manifold, needles, zero-area faces, thin walls: no usable remesh (docs/cvt.md), but no
-  // failure either: every site is a valid point of the input, the fixes stay within their cap,
+  // failure either: every site is a valid point of the input, the fixes stay within their caps,
   // and the energy still never rises.
   if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
   for (const char* name : {"openscad_nonmanifold_crash.obj", "manifold_offset1.obj"}) {
@@ -45,7 +45,8 @@ TEST(CvtRobustness, CadMeshesRunToTheEnd) {
     o.sites = 800;
     o.max_iterations = 10;
     const cvt::CvtResult r = cvt::compute_cvt(m, o);
-    EXPECT_LE(r.sites.size(), 800u + 40u) << name;
+    // The fixes during the iterations (5%) and the closing rounds after them (25%).
+    EXPECT_LE(r.sites.size(), 800u + 40u + 200u) << name;
     for (const cvt::Site& s : r.sites) {
       ASSERT_LT(s.face, m.num_faces()) << name;
       EXPECT_NEAR(s.barycentric[0] + s.barycentric[1] + s.barycentric[2], 1.0, 1e-9);

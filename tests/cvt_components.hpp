@@ -34,4 +34,21 @@ inline TriangleMesh moebius(int n) {
   return m;
 }
 
+// A torus of tube radius r around a circle of radius 1, n x m quads, outward.
+inline TriangleMesh torus(double r, int n, int m) {
+  TriangleMesh t;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double a = 2 * M_PI * i / n, b = 2 * M_PI * j / m;
+      t.positions.push_back({(1 + r * std::cos(b)) * std::cos(a), (1 + r * std::cos(b)) * std::sin(a), r * std::sin(b)});
+    }
+  auto v = [&](int i, int j) { return Index((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      t.triangles.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+      t.triangles.push_back({v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+    }
+  return t;
+}
+
 }  // namespace gsp::test

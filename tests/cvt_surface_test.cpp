@@ -160,3 +160,27 @@ TEST(CvtSurface, NonOrientableKeptAndOptionsChecked) {
 }
 
 }  // namespace
+
+// A thin torus at a budget whose site spacing is about its tube's circumference: Lloyd's
+// regions wrap around the tube, so the dual of the iterations alone is not a manifold torus;
+// the closing rounds add sites there until it is (CvtOptions::closing_rounds).
+TEST(CvtSurface, ClosingRoundsKeepAThinTubesTopology) {
+  const TriangleMesh m = test::torus(0.08, 96, 12);
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 80;
+  o.cvt.max_iterations = 10;
+  o.cvt.closing_rounds = 0;
+  const cvt::SurfaceRemeshResult open = cvt::remesh_surface(m, o);
+  ASSERT_EQ(open.components.size(), 1u);
+  EXPECT_EQ(open.components[0].outcome, ComponentOutcome::kept_topology) << open.components[0].reason;
+
+  o.cvt.closing_rounds = 16;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed) << r.components[0].reason;
+  EXPECT_GT(r.cvt_stats.closing_sites, 0u);
+  EXPECT_LE(double(r.cvt_stats.closing_sites), o.cvt.max_closing_fraction * 80);
+  expect_clean(r.mesh);
+  std::string why;
+  EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
+}

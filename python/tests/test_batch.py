@@ -33,9 +33,12 @@ CORPUS_DIR = DATA_DIR.parent / "corpus"
 GOOD = ["fertility.off", "camelhead.off", "manifold_offset1.obj", "newell_teapot.obj", "openscad_nonmanifold_crash.obj"]
 # ~0.4-1.7 s each for `remesh --vertices 300 --iterations 5` (2 cores), for the worker-kill test.
 REMESH_MESHES = ["blobby_shuffled.off", "cgal_bones.off", "pmp_sphere.off", "cow_remeshed_lowres.obj",
-                 "triple_vierbein.obj", "spot_remeshed.obj", "libigl_arm.obj", "mannequin_devil.off",
+                 "cgal_anchor_dense.off", "spot_remeshed.obj", "libigl_arm.obj", "mannequin_devil.off",
                  "assimp_spider.obj", "blub_fish.obj"]
 REMESH_OPTIONS = ["--vertices", "300", "--iterations", "5"]
+# Of GOOD, those gsp-cvt remeshes with REMESH_OPTIONS (manifold_offset1's components are too
+# small for 300 sites, openscad_nonmanifold_crash is non-manifold: both exit 1, by design).
+REMESHABLE = ["fertility.off", "camelhead.off", "newell_teapot.obj"]
 
 
 def _env():
@@ -282,7 +285,7 @@ def test_second_run_skips_and_changes_rerun(cluster, tmp_path):
 def test_stopped_run_resumes(cluster, mesh_folder, tmp_path):
     """Ctrl-C after the first mesh: the tables say what finished, a second run does the rest."""
     out = tmp_path / "out"
-    names = GOOD[:4]
+    names = [n for n in GOOD if n in REMESHABLE]
 
     def stop(row, done, total):
         raise KeyboardInterrupt
@@ -291,7 +294,7 @@ def test_stopped_run_resumes(cluster, mesh_folder, tmp_path):
         batch.run("remesh", [mesh_folder / n for n in names], out, scheduler=cluster.scheduler_file,
                   bin_dir=BIN_DIR, options=REMESH_OPTIONS, progress=stop)
     table = read_csv(out / "results.csv")
-    assert len(table) == 4
+    assert len(table) == len(names)
     done = [r for r in table if r["status"] == "ok"]
     assert len(done) == 1
     assert {r["error"] for r in table if r["status"] != "ok"} == {"not finished: interrupted"}
@@ -300,7 +303,7 @@ def test_stopped_run_resumes(cluster, mesh_folder, tmp_path):
 
     rows = batch.run("remesh", [mesh_folder / n for n in names], out, scheduler=cluster.scheduler_file,
                      bin_dir=BIN_DIR, options=REMESH_OPTIONS)
-    assert sorted(r["status"] for r in rows) == ["ok", "ok", "ok", "skipped"]
+    assert sorted(r["status"] for r in rows) == ["ok"] * (len(names) - 1) + ["skipped"]
     assert next(r for r in rows if r["status"] == "skipped")["output"] == done[0]["output"]
 
 

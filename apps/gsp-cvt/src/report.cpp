@@ -62,6 +62,9 @@ void report_cvt(cli::Context& ctx, const cvt::SurfaceRemeshResult& cvt) {
   ops["split_regions"] = s.split_regions;
   ops["nondisk_regions"] = s.nondisk_regions;
   ops["junction_fixes"] = s.junction_fixes;
+  ops["closing_sites"] = s.closing_sites;
+  ops["closing_rounds"] = s.closing_rounds;
+  ops["closing_steps"] = s.closing_steps;
   ops["rejected_steps"] = s.rejected_steps;
   ops["propagations"] = s.propagations;
   ops["update_steps"] = s.update_steps;

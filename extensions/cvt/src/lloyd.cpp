@@ -6,6 +6,7 @@
 #include "regions.hpp"
 #include "working_geometry.hpp"
 
+#include <gsp/cvt/components.hpp>
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
@@ -152,6 +153,47 @@ class Lloyd {
     added.resize(kept);
     stats_.timings.fix += seconds_since(t0);
     return !added.empty() || !lost.empty();
+  }
+
+  // After the iterations, while the dual does not have the input's topology: a new site at
+  // each place fix_junctions finds, without a Lloyd step after it (a step moves the new site
+  // off the junction it resolves; docs/cvt.md). Its own cap, `cap` sites in all. Returns true
+  // if sites were added.
+  bool close_dual(const Evaluation& e, std::vector<SurfaceSite>& sites, std::size_t cap) {
+    const auto t0 = Clock::now();
+    std::vector<SurfaceSite> added;
+    fix_junctions(e, sites, added);
+    std::size_t kept = 0;
+    for (const SurfaceSite& s : added) {
+      if (s.face == kInvalidIndex || stats_.closing_sites >= cap) continue;
+      sites.push_back(s);
+      ++stats_.closing_sites;
+      ++kept;
+    }
+    stats_.timings.fix += seconds_since(t0);
+    return kept > 0;
+  }
+
+  // True when the dual of these regions (before the remesh's post-pass, which keeps its
+  // topology) is a manifold with the topology of `input`, component by component.
+  bool dual_has_topology(const Evaluation& e, const std::vector<SurfaceSite>& sites, const TriangleMesh& input) const {
+    std::vector<Vec3> positions(sites.size());
+    for (std::size_t i = 0; i < sites.size(); ++i) positions[i] = sites[i].position;
+    const DualTriangles d = dual_triangles(g_.mesh, g_.conn, e.label, positions);
+    TriangleMesh dual;
+    std::vector<Index> local(sites.size(), kInvalidIndex);
+    for (const Triangle& t : d.triangles) {
+      Triangle u;
+      for (int k = 0; k < 3; ++k) {
+        if (local[t[k]] == kInvalidIndex) {
+          local[t[k]] = Index(dual.positions.size());
+          dual.positions.push_back(positions[t[k]]);
+        }
+        u[k] = local[t[k]];
+      }
+      dual.triangles.push_back(u);
+    }
+    return same_topology_per_component(input, dual);
   }
 
   // Sites whose region touches the boundary, moved onto it (before the first Lloyd step).
@@ -481,6 +523,44 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     if (relative < options.tolerance && !fixed_now) {
       stats.converged = true;
       break;
+    }
+  }
+  if (options.fix_regions) {
+    const std::size_t cap = std::size_t(options.max_closing_fraction * double(stats.initial_sites));
+    // A round is kept only if the energy estimate does not rise (as the fixes above), so the
+    // curve, which gets one entry per round and step, stays monotone.
+    bool closed = lloyd.dual_has_topology(e, sites, mesh);
+    for (int round = 0; round < options.closing_rounds && !closed; ++round) {
+      std::vector<SurfaceSite> more = sites;
+      const std::size_t added_before = stats.closing_sites;
+      if (!lloyd.close_dual(e, more, cap)) break;
+      Evaluation ce = lloyd.evaluate(more);
+      if (!(ce.energy <= e.energy)) {
+        stats.closing_sites = added_before;
+        break;
+      }
+      sites = std::move(more);
+      e = std::move(ce);
+      out.energy_curve.push_back(e.energy);
+      stats.closing_rounds = round + 1;
+      closed = lloyd.dual_has_topology(e, sites, mesh);
+    }
+    // Lloyd steps after the closing even the new sites' regions out, each kept only if the
+    // energy goes down and the dual keeps the topology.
+    for (int it = 0; closed && stats.closing_sites > 0 && it < options.closing_steps; ++it) {
+      bool kept = false;
+      for (double t : {1.0, 0.5, 0.25}) {
+        std::vector<SurfaceSite> candidate = lloyd.step(e, sites, t, true);
+        Evaluation ce = lloyd.evaluate(candidate);
+        if (!(ce.energy <= e.energy) || !lloyd.dual_has_topology(ce, candidate, mesh)) continue;
+        sites = std::move(candidate);
+        e = std::move(ce);
+        out.energy_curve.push_back(e.energy);
+        stats.closing_steps++;
+        kept = true;
+        break;
+      }
+      if (!kept) break;
     }
   }
   out.energy = e.energy;

@@ -25,6 +25,9 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.split_regions += s.split_regions;
   sum.nondisk_regions += s.nondisk_regions;
   sum.junction_fixes += s.junction_fixes;
+  sum.closing_sites += s.closing_sites;
+  sum.closing_rounds = std::max(sum.closing_rounds, s.closing_rounds);
+  sum.closing_steps = std::max(sum.closing_steps, s.closing_steps);
   sum.working_faces += s.working_faces;
   sum.subdivisions = std::max(sum.subdivisions, s.subdivisions);
   sum.bisections += s.bisections;

@@ -61,6 +61,16 @@ struct CvtOptions {
   // one run of regions per loop (a region touching a loop twice gets a second site).
   bool fix_regions = true;
   double max_added_fraction = 0.05;   // the fixes add at most this fraction of the sites
+  // After the iterations, while the dual is not a manifold with the input's topology, up to
+  // `closing_rounds` rounds add a site wherever it goes wrong (the same three regions meeting
+  // twice, two regions with a border of more than two ends), with no Lloyd step after them; at
+  // most max_closing_fraction of the sites. A round is kept only if the energy estimate does
+  // not rise.
+  int closing_rounds = 16;
+  double max_closing_fraction = 0.25;
+  // Then up to this many Lloyd steps, each kept only if the energy goes down and the dual
+  // keeps the topology.
+  int closing_steps = 3;
   // Sites whose region touches the mesh boundary are kept on the boundary: they move to the
   // point of their region's boundary arc closest to the area centroid (the constrained
   // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
@@ -90,6 +100,9 @@ struct CvtStats {
   std::size_t split_regions = 0;   // regions found with several components (all iterations)
   std::size_t nondisk_regions = 0; // single-component regions that are not disks
   std::size_t junction_fixes = 0;  // sites added where the dual would not be manifold
+  std::size_t closing_sites = 0;   // of those, added after the iterations (CvtOptions::closing_rounds)
+  int closing_rounds = 0;
+  int closing_steps = 0;           // Lloyd steps kept after the closing
   std::size_t working_faces = 0;
   int subdivisions = 0;
   std::size_t bisections = 0;      // long edges split after the uniform subdivision
@@ -120,7 +133,8 @@ std::size_t refine_long_edges(WorkingMesh& w, double max_edge, std::size_t max_f
 
 struct CvtResult {
   std::vector<Site> sites;
-  std::vector<double> energy_curve;     // energy of the accepted sites, per iteration (0 = initial)
+  // Energy of the accepted sites, per iteration (0 = initial), then per closing round and step.
+  std::vector<double> energy_curve;
   double energy = 0;                    // last entry of energy_curve
   // Labels of the final sites' Voronoi regions: per input vertex, and on the working mesh
   // per vertex and per face (index into sites; kInvalidIndex where unreached).
