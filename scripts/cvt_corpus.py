@@ -29,7 +29,7 @@ OUTPUT_FIELDS = ("status", "vertices", "min_angle", "percent_below_30", "hausdor
                  "manifold", "euler_characteristic", "boundary_loops", "components", "duplicate_vertices",
                  "inconsistent_edges", "topology_kept", "topology_difference", "seconds", "note")
 PHASES = ("subdivide", "prepare", "initial", "propagate", "centroids", "fix", "remesh")
-INPUT_FIELDS = ("vertices", "triangles", "components", "surface_components", "manifold", "euler_characteristic",
+INPUT_FIELDS = ("vertices", "faces", "components", "surface_components", "manifold", "euler_characteristic",
                 "boundary_loops", "inconsistent_edges", "feature_edges")
 
 

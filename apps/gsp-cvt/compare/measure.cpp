@@ -1,5 +1,6 @@
 #include "measure.hpp"
 
+#include <gsp/cli/topology_json.hpp>
 #include <gsp/connectivity.hpp>
 #include <gsp/cvt/closest_point_index.hpp>
 #include <gsp/cvt/components.hpp>
@@ -15,17 +16,11 @@ namespace gsp::cvt_compare {
 
 namespace {
 
-void put_topology(cli::Json& j, const TopologyReport& t, std::size_t duplicates) {
-  j["vertices"] = t.vertices;
-  j["triangles"] = t.faces;
-  j["euler_characteristic"] = static_cast<long long>(t.euler_characteristic);
-  j["boundary_loops"] = t.boundary_loops;
-  j["components"] = t.components;
-  j["manifold"] = t.is_manifold();
-  j["nonmanifold_edges"] = t.nonmanifold_edges;
-  j["nonmanifold_vertices"] = t.nonmanifold_vertices;
-  j["inconsistent_edges"] = t.inconsistent_edges;
+// The shared topology figures plus the duplicate vertices a remesh must not have.
+cli::Json topology_with_duplicates(const TopologyReport& t, std::size_t duplicates) {
+  cli::Json j = cli::topology_json(t);
   j["duplicate_vertices"] = duplicates;
+  return j;
 }
 
 // Points along the feature edges, about diagonal / 2000 apart (every edge's ends and
@@ -46,8 +41,7 @@ std::vector<Vec3> feature_samples(const TriangleMesh& m, const cvt::Features& f)
 }  // namespace
 
 cli::Json describe_input(const TriangleMesh& input) {
-  cli::Json j = cli::Json::object();
-  put_topology(j, analyze_topology(input, build_connectivity(input)), cvt::duplicate_vertices(input));
+  cli::Json j = topology_with_duplicates(analyze_topology(input, build_connectivity(input)), cvt::duplicate_vertices(input));
   std::size_t surfaces = 0;
   for (const TriangleMesh& c : cvt::split_components(input).meshes) {
     const cvt::ComponentTopology t = cvt::component_topology(c);
@@ -92,8 +86,7 @@ Measures measure_output(const TriangleMesh& input, const TriangleMesh& output, s
 }
 
 cli::Json to_json(const Measures& m) {
-  cli::Json j = cli::Json::object();
-  put_topology(j, m.topology, m.duplicate_vertices);
+  cli::Json j = topology_with_duplicates(m.topology, m.duplicate_vertices);
   j["min_angle"] = m.min_angle;
   j["mean_min_angle"] = m.mean_min_angle;
   j["percent_below_30"] = m.percent_below_30;

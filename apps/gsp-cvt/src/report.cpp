@@ -1,5 +1,6 @@
 #include "report.hpp"
 
+#include <gsp/cli/topology_json.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/io/mesh_io.hpp>
 
@@ -8,20 +9,6 @@
 namespace gsp::cvt_app {
 
 namespace {
-
-cli::Json topology_json(const TopologyReport& t) {
-  cli::Json j = cli::Json::object();
-  j["vertices"] = t.vertices;
-  j["faces"] = t.faces;
-  j["euler_characteristic"] = static_cast<long long>(t.euler_characteristic);
-  j["boundary_loops"] = t.boundary_loops;
-  j["components"] = t.components;
-  j["manifold"] = t.is_manifold();
-  j["nonmanifold_edges"] = t.nonmanifold_edges;
-  j["nonmanifold_vertices"] = t.nonmanifold_vertices;
-  j["inconsistent_edges"] = t.inconsistent_edges;
-  return j;
-}
 
 // A colour per region that neighbours are unlikely to share: the label hashed to a hue.
 std::array<std::uint8_t, 4> region_colour(Index label) {
@@ -101,8 +88,8 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
   res["boundary_snaps"] = remesh.remesh_stats.boundary_snaps;
   res["pulls"] = remesh.remesh_stats.pulls;
   res["far_point_insertions"] = remesh.remesh_stats.far_point_insertions;
-  ctx.stats()["topology"]["input"] = topology_json(input);
-  ctx.stats()["topology"]["output"] = topology_json(output);
+  ctx.stats()["topology"]["input"] = cli::topology_json(input);
+  ctx.stats()["topology"]["output"] = cli::topology_json(output);
   cli::Json& list = ctx.stats()["components"] = cli::Json::array();
   for (const cvt::ComponentReport& c : remesh.components) {
     cli::Json j = cli::Json::object();
