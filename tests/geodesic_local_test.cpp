@@ -12,6 +12,8 @@
 
 #include <cmath>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace gsp::test {
 namespace {
@@ -137,6 +139,37 @@ TEST(LocalQuery, WorkspaceIsRestoredBetweenQueries) {
   EXPECT_EQ(again.faces, ra.faces);
   const LocalField again_b = solver.compute_local(b, o, ws);
   EXPECT_EQ(again_b.vertex_distance, rb.vertex_distance);
+}
+
+// Both queries check their options in one place (validate_options): the same bad option gives
+// the same message from compute() and compute_local().
+TEST(LocalQuery, BadOptionsSameMessageAsCompute) {
+  const TriangleMesh m = grid(4);
+  const GeodesicSolver solver(m);
+  LocalWorkspace ws = solver.make_workspace();
+  auto message = [](auto&& run) -> std::string {
+    try {
+      run();
+    } catch (const InvalidInput& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  std::vector<GeodesicOptions> bad(4);
+  bad[0].f = 0;
+  bad[1].f1 = -1;
+  bad[2].max_distance = -1;
+  bad[3].max_distance = std::nan("");
+  for (const GeodesicOptions& o : bad) {
+    const std::string full = message([&] { solver.compute({Source::at_vertex(0)}, o); });
+    const std::string local = message([&] { solver.compute_local({Source::at_vertex(0)}, o, ws); });
+    EXPECT_NE(full, "no error");
+    EXPECT_EQ(full, local);
+  }
+  GeodesicOptions far;
+  far.targets = {1000};
+  EXPECT_NE(message([&] { solver.compute({Source::at_vertex(0)}, far); }).find("target vertex 1000 does not exist"),
+            std::string::npos);
 }
 
 TEST(LocalQuery, Errors) {

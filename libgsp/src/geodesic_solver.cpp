@@ -2,6 +2,7 @@
 #include "query_steps.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
+#include "validate_options.hpp"
 #include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
@@ -177,21 +178,7 @@ std::size_t GeodesicSolver::state_bytes(Precision precision) const {
 
 GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
                                        const GeodesicOptions& options) const {
-  if (!(options.f > 0) || !(options.f0 > 0) || !(options.f1 > 0))
-    throw InvalidInput("strategy parameters f, f0, f1 must be positive");
-  if (std::isnan(options.max_distance) || options.max_distance < 0)
-    throw InvalidInput("max_distance must be >= 0");
-  if (options.goal_directed && options.targets.empty())
-    throw InvalidInput("goal_directed (A*) needs at least one target");
-  // Both are 3D constructions: a straight-line lower bound and a point in the face's plane.
-  if (impl_->custom_lengths && options.goal_directed)
-    throw InvalidInput("goal_directed (A*) bounds by 3D straight lines: not with SolverOptions::edge_lengths");
-  if (impl_->custom_lengths && options.want_face_sources)
-    throw InvalidInput("per-face virtual sources are 3D points: not with SolverOptions::edge_lengths");
-  for (Index t : options.targets)
-    if (t >= impl_->mesh.num_vertices())
-      throw InvalidInput("target vertex " + std::to_string(t) + " does not exist (" +
-                         std::to_string(impl_->mesh.num_vertices()) + " vertices)");
+  detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh.num_vertices());
   // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
   // per-face virtual sources need the input faces.
   bool vertex_sources_only = true;

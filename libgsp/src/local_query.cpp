@@ -5,6 +5,7 @@
 #include "query_steps.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
+#include "validate_options.hpp"
 #include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
@@ -48,14 +49,7 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
                                          LocalWorkspace& workspace) const {
   if (!workspace.state_ || workspace.state_->owner != impl_.get())
     throw InvalidInput("compute_local: the workspace was made by another solver (use make_workspace())");
-  if (!options.targets.empty() || options.goal_directed)
-    throw InvalidInput("compute_local: targets are not supported (use compute())");
-  if (!(options.f > 0) || !(options.f0 > 0) || !(options.f1 > 0))
-    throw InvalidInput("strategy parameters f, f0, f1 must be positive");
-  if (std::isnan(options.max_distance) || options.max_distance < 0)
-    throw InvalidInput("max_distance must be >= 0");
-  if (impl_->custom_lengths && options.want_face_sources)
-    throw InvalidInput("per-face virtual sources are 3D points: not with SolverOptions::edge_lengths");
+  detail::validate_options(options, detail::QueryKind::local, impl_->custom_lengths, impl_->mesh.num_vertices());
   if (resolved_precision(options.precision, /*input_faces=*/true) == Precision::single)
     return impl_->run_local<float>(sources, options, workspace);
   return impl_->run_local<double>(sources, options, workspace);
