@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace gsp::detail {
 
@@ -36,6 +37,11 @@ struct FaceRecord {
   bool flat_corner(Index i) const { return corner_bits(i, kFlatCorner0); }
   bool saddle_corner(Index i) const { return corner_bits(i, kSaddleCorner0); }
   bool convex_corner(Index i) const { return corner_bits(i, kFlatCorner0 | kSaddleCorner0); }
+  // The corner's kind as gsp/intrinsic/vertex_kinds.hpp numbers them (flat 1, saddle 2, convex 3).
+  static_assert(kFlatCorner0 == 1u << 26 && kSaddleCorner0 == 1u << 29, "corner_kind reads bits 26 + i and 29 + i");
+  std::uint8_t corner_kind(Index i) const {
+    return std::uint8_t(((tag >> (26 + i)) & 1u) | (((tag >> (29 + i)) & 1u) << 1));
+  }
 };
 
 // The frames of a face (gsp/intrinsic/face_frame.hpp), shared with the extensions.

@@ -7,6 +7,7 @@
 #include "ring_links.hpp"
 
 #include <gsp/geodesics.hpp>
+#include <gsp/intrinsic/corner_rules.hpp>
 #include <gsp/intrinsic/speed_limiter.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
@@ -150,7 +151,8 @@ class UpdateStep {
       const Real span = qy - sy;   // >= 0
       kind = tq < 0 ? 1 : (tq > e1 * span ? 2 : 0);
       // Where the segment from the probe at lambda (between P and the centroid) to S crosses
-      // AB's line: 0 within AB, 1 before A, 2 beyond B (the same test as above).
+      // AB's line: 0 within AB, 1 before A, 2 beyond B (the same test as above). The corner
+      // rules (gsp/intrinsic/corner_rules.hpp) ask it where a corner's kind has the last word.
       auto crossing = [&](Real lambda) {
         const Real rx = v.px + lambda * (cx - v.px), ry = v.py + lambda * (cy - v.py);
         const Real tr = rx * -sy + sx * ry;
@@ -158,37 +160,11 @@ class UpdateStep {
       };
       if (kind != 0) {
         const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
-        // Around a flat vertex every unfolding agrees and no geodesic turns: where the probe's
-        // line passes the vertex closely (crosses AB's line at most kFlatMiss beyond it) the
-        // source goes straight on. Farther out the line could pass vertices that are not flat.
-        if (t.flat_corner(end)) {
-          if ((kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span) kind = 0;
-        } else if (t.convex_corner(end)) {
-          // Round a convex vertex (angle sum below 2 pi) the bend S -> vertex -> x is never
-          // shorter than the straight line S -> x, and where the line misses AB the true path
-          // comes round the vertex's other side and is shorter than both; so a bend there only
-          // over-estimates. The source goes on straight wherever the centroid is still seen
-          // through AB (the table's probe nearer the opposite corner is what said "bend").
-          // Unconditionally straight was worse: the line then runs through the cone's gap and
-          // passes saddles farther on at the wrong side (armadillo 0.233 -> 0.443%).
-          if (crossing(Real(1)) == 0) kind = 0;
-        } else if (t.saddle_corner(end)) {
-          // At a saddle a bend is right for the hidden part of the face and over-estimates the
-          // rest. The table probes needles and slivers almost at the opposite corner (entries
-          // 10, 11, 14: lambda about 0.05), so it bends where nearly all of the face sees the
-          // source; the CAD parts, whose concave corners are saddles, over-estimated by
-          // +0.8%. A probe at kSaddleLooseLambda has the last word there.
-          if (crossing(kSaddleLooseLambda) == 0) kind = 0;
-        }
+        auto within_flat_miss = [&] { return (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span; };
+        kind = intrinsic::reconsider_bend(kind, t.corner_kind(end), within_flat_miss, crossing);
       }
-      // Round a saddle vertex (angle sum above 2 pi) the unfolded straight line can pass on
-      // the wrong side and come out shorter than any surface path; the centroid probe lets
-      // such lines through. Where the line passes a saddle end of AB, it is tested again with
-      // a probe nearer the opposite corner (kSaddleLambda), and bends there if that fails.
-      if (kind == 0 && e1 > 0 && (t.saddle_corner(cj) || t.saddle_corner(cj == 2 ? 0 : cj + 1))) {
-        const int strict = crossing(kSaddleLambda);
-        if (strict != 0 && t.saddle_corner(strict == 1 ? cj : (cj == 2 ? 0 : cj + 1))) kind = strict;
-      }
+      if (kind == 0 && e1 > 0)
+        kind = intrinsic::straight_past_saddles(t.saddle_corner(cj), t.saddle_corner(cj == 2 ? 0 : cj + 1), crossing);
     } else {
       // The source lies on T's side of the edge (the paper's same-side case): no straight
       // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
@@ -249,15 +225,9 @@ class UpdateStep {
 
  private:
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
-  // The corner rules' constants; docs/gsp-core.md (the update step, rules 4, 5 and 7) says
-  // why these values and what the others measured.
-  // Past a flat corner a source goes straight on within this many mean edge lengths.
+  // Past a flat corner a source goes straight on within this many mean edge lengths (the
+  // records' lengths are in mean edges; gsp/intrinsic/corner_rules.hpp).
   static constexpr Real kFlatMiss = Real(intrinsic::kFlatMiss);
-  // The strict probe at a saddle end (angle sum over 2 pi (1 + kSaddleExcess)): this far from
-  // the opposite corner towards the centroid.
-  static constexpr Real kSaddleLambda = Real(0.75);
-  // The loose probe that can overrule the table's "bend" at a saddle end.
-  static constexpr Real kSaddleLooseLambda = Real(0.3);
   FaceRecord<Real>* faces_;
   const Index* ring_;
   ProbeTable<Real> probe_;
