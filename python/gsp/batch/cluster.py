@@ -1,0 +1,65 @@
+"""Where the tasks run: a Dask client (an existing scheduler or a LocalCluster) and its dashboard."""
+import os
+import shutil
+import tempfile
+
+from .errors import UsageError
+
+
+def connect(scheduler=None, workers=None):
+    """A dask.distributed Client: to `scheduler` (an address or a scheduler file), or to a new
+    LocalCluster of `workers` processes with one thread each (default: one per core).
+
+    Returns (client, close); call close() at the end (it also stops a cluster it started).
+    """
+    import logging
+    from distributed import Client, LocalCluster
+    if scheduler and workers:
+        raise UsageError("--scheduler and --workers exclude each other")
+    if scheduler:
+        scheduler = os.fspath(scheduler)
+        if os.path.isfile(scheduler):
+            client = Client(scheduler_file=scheduler, timeout="30s")
+        else:
+            client = Client(scheduler, timeout="30s")
+        return client, client.close
+    n = int(workers) if workers else (os.cpu_count() or 1)
+    if n < 1:
+        raise UsageError(f"--workers {n}: at least 1")
+    scratch = tempfile.mkdtemp(prefix="gsp-batch-workers-")
+    try:
+        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
+                               silence_logs=logging.ERROR, local_directory=scratch)
+        client = Client(cluster)
+    except BaseException:
+        shutil.rmtree(scratch, ignore_errors=True)
+        raise
+
+    def close():
+        try:
+            client.close()
+            cluster.close()
+        finally:
+            shutil.rmtree(scratch, ignore_errors=True)
+    return client, close
+
+
+def dashboard_link(client):
+    """(address, note) of the scheduler's Dask dashboard, or None when it serves none.
+
+    The note is "" or says why the page is empty (the scheduler lacks bokeh). The address is
+    asked for once (2 s): a scheduler started with --no-dashboard answers 404.
+    """
+    import urllib.error
+    import urllib.request
+    try:
+        if "dashboard" not in (client.scheduler_info().get("services") or {}):
+            return None
+        link = client.dashboard_link
+        with urllib.request.urlopen(link, timeout=2) as page:
+            body = page.read(4096).decode("utf-8", "replace")
+    except urllib.error.HTTPError:
+        return None
+    except Exception:   # noqa: BLE001 - unreachable from here, or no address: nothing to print
+        return None
+    return link, ("it needs bokeh, which the scheduler lacks" if "needs bokeh" in body else "")

@@ -1,0 +1,204 @@
+"""run(): a job over every mesh of the inputs on Dask, skipping what the manifest says is done."""
+import hashlib
+import json
+import os
+import pathlib
+import time
+import uuid
+
+from .apps import DEFAULT_EXT, JOBS, _RESERVED_OPTIONS, _app_version, find_app
+from .callables import _callable_identity, _callable_pythonpath, _load_callable
+from .cluster import connect
+from .errors import UsageError, _one_line
+from .inputs import _expand_inputs, _output_names, _sha256_file
+from .jsonable import _json_default
+from .manifest import _compact_manifest, _complete, _read_manifest
+from .outdir import MANIFEST
+from .rows import COLUMNS, _make_row, _write_tables
+from .task import _run_task
+
+
+def _parse_memory(value):
+    if value is None or isinstance(value, int):
+        return value
+    s = str(value).strip().upper().rstrip("B")
+    units = {"K": 1 << 10, "M": 1 << 20, "G": 1 << 30, "T": 1 << 40}
+    try:
+        if s and s[-1] in units:
+            return int(float(s[:-1]) * units[s[-1]])
+        return int(float(s))
+    except ValueError:
+        raise UsageError(f"--max-memory {value}: a size like 4G or 500M") from None
+
+
+def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, options=(), bin_dir=None,
+        ext=None, timeout=None, max_memory=None, retries=2, force=False, progress=None, on_client=None):
+    """Run JOB on every mesh of INPUTS on Dask, outputs into OUTDIR; returns one dict per mesh.
+
+    job: "geodesic", "sample", "remesh", "path", "bench" (the apps, `options` passed to them),
+    "module:function", or a callable, called as fn(V, F, path) with `path` the file to write
+    (renamed to OUTDIR/<name><ext> when it returns; fn may take `input=` too); it returns a
+    dict of figures for the row, or None.
+    inputs: files, folders and globs. client / scheduler / workers: where to run (default: a
+    LocalCluster with a worker per core). timeout: seconds per mesh. max_memory: bytes (or
+    "4G") of address space per mesh. retries: Dask's retries of a task whose worker failed.
+    force: ignore the manifest (re-run everything). progress(row, done, total): called for
+    every row as it is known (skipped rows first). on_client(client): called once connected
+    (no cluster is started or contacted when every mesh is skipped).
+
+    Every mesh is a row with status "ok", "error" (and its one-line `error`) or "skipped"
+    (complete from an earlier run with the same settings). results.csv, results.json and
+    manifest.jsonl are written to OUTDIR. Raises UsageError for a batch that cannot start,
+    FileNotFoundError when the app is missing.
+    """
+    started = time.time()
+    t0 = time.perf_counter()
+    options = [str(o) for o in options]
+    if callable(job) and not isinstance(job, str):
+        fn, job_name = job, f"{getattr(job, '__module__', '?')}:{getattr(job, '__qualname__', 'callable')}"
+    elif isinstance(job, str) and job in JOBS:
+        fn, job_name = None, job
+    elif isinstance(job, str) and ":" in job:
+        fn, job_name = _load_callable(job), job
+    else:
+        raise UsageError(f"{job}: unknown job (one of {', '.join(JOBS)}, or module:function)")
+    if fn is None:
+        for o in options:
+            if o.split("=", 1)[0] in _RESERVED_OPTIONS:
+                raise UsageError(f"{o}: gsp-batch sets this option itself")
+    elif options:
+        raise UsageError(f"{job_name}: a callable job takes no job options ({' '.join(options)})")
+    if timeout is not None and not (timeout > 0):
+        raise UsageError(f"--timeout {timeout}: must be positive")
+    max_memory = _parse_memory(max_memory)
+    ext = ext or (DEFAULT_EXT.get(job_name, ".ply"))
+    if not ext.startswith("."):
+        ext = "." + ext
+    paths = _expand_inputs(inputs)
+    outdir = pathlib.Path(outdir).resolve()
+    outdir.mkdir(parents=True, exist_ok=True)
+
+    if fn is None:
+        app = find_app(job_name, bin_dir)
+        tool = _app_version(app)
+        base = {"kind": "app", "job": job_name, "app": app,
+                "output_flag": "--json" if job_name == "bench" else "-o",
+                "extra": ["--no-table"] if job_name == "bench" else []}
+    else:
+        import cloudpickle
+        tool = _callable_identity(fn)
+        base = {"kind": "callable", "job": job_name, "function": cloudpickle.dumps(fn),
+                "pythonpath": _callable_pythonpath(fn)}
+    base.update(timeout=timeout, max_memory=max_memory, ext=ext)
+
+    manifest = {} if force else _read_manifest(outdir)
+    by_input = {}
+    for e in manifest.values():
+        if {"input", "input_size", "input_mtime_ns", "input_sha256"} <= e.keys():
+            by_input[(e["input"], e["input_size"], e["input_mtime_ns"])] = e["input_sha256"]
+
+    names = _output_names(paths, ext)
+    rows = [None] * len(paths)
+    tasks = []
+    done = 0
+
+    def report(i):
+        nonlocal done
+        done += 1
+        if progress is not None:
+            progress(rows[i], done, len(paths))
+
+    for i, (p, name) in enumerate(zip(paths, names)):
+        st = p.stat()
+        sha = by_input.get((str(p), st.st_size, st.st_mtime_ns)) or _sha256_file(p)
+        settings = {"job": job_name, "options": options, "tool": tool, "input_sha256": sha, "ext": ext}
+        settings_hash = hashlib.sha256(json.dumps(settings, sort_keys=True).encode()).hexdigest()[:20]
+        task = dict(base, input=str(p), output=str(outdir / name), output_name=name,
+                    settings_hash=settings_hash, input_sha256=sha, input_size=st.st_size,
+                    input_mtime_ns=st.st_mtime_ns, index=i)
+        task["options"] = [o.replace("{name}", pathlib.Path(name).stem).replace("{outdir}", str(outdir))
+                           for o in options]
+        entry = manifest.get(name)
+        if not force and _complete(entry, settings_hash, outdir):
+            row = dict(entry.get("row") or {}, input=str(p), output=name, status="skipped", error="")
+            rows[i] = row
+            report(i)
+        else:
+            tasks.append(task)
+
+    owned_close = None
+    futures = {}
+    try:
+        if tasks:
+            if client is None:
+                client, owned_close = connect(scheduler, workers)
+            if on_client is not None:
+                on_client(client)
+            from distributed import as_completed
+            run_id = uuid.uuid4().hex[:8]
+            # Largest meshes first: the long tasks start early and the last ones are short.
+            order = sorted(tasks, key=lambda t: -t["input_size"])
+            for rank, task in enumerate(order):
+                key = f"gsp-batch-{run_id}-{task['index']}-{pathlib.Path(task['output_name']).stem[:40]}"
+                spec = {k: v for k, v in task.items() if k not in ("settings_hash", "input_sha256",
+                                                                   "input_mtime_ns", "index")}
+                fut = client.submit(_run_task, spec, key=key, retries=retries, pure=False,
+                                    priority=len(order) - rank)
+                futures[fut] = task
+            with open(outdir / MANIFEST, "a", encoding="utf-8") as mf:
+                for fut in as_completed(list(futures)):
+                    task = futures.pop(fut)
+                    if fut.status == "finished":
+                        res = fut.result()
+                    else:
+                        try:
+                            exc = fut.exception()
+                            msg = _one_line(exc)
+                        except Exception as e:   # noqa: BLE001 - cancelled: whatever Dask says
+                            msg = _one_line(e)
+                        res = {"returncode": None, "error": f"task failed: {msg}"}
+                    fut.release()
+                    if (task["kind"] == "app" and res.get("returncode") == 2):
+                        for f in futures:
+                            f.cancel()
+                        futures.clear()
+                        raise UsageError(res.get("error") or f"{task['app']}: usage error")
+                    row = _make_row(task, res)
+                    rows[task["index"]] = row
+                    if row["status"] == "ok":
+                        files = {}
+                        if row["output"] and os.path.exists(task["output"]):
+                            files[row["output"]] = os.path.getsize(task["output"])
+                        entry = {"output_name": task["output_name"], "input": task["input"],
+                                 "input_size": task["input_size"], "input_mtime_ns": task["input_mtime_ns"],
+                                 "input_sha256": task["input_sha256"], "settings_hash": task["settings_hash"],
+                                 "job": job_name, "options": options, "tool": tool, "files": files,
+                                 "finished": time.time(), "row": row}
+                        mf.write(json.dumps(entry, default=_json_default) + "\n")
+                        mf.flush()
+                    report(task["index"])
+    except UsageError:
+        raise
+    except BaseException as e:
+        reason = "interrupted" if isinstance(e, KeyboardInterrupt) else _one_line(e)
+        for i, r in enumerate(rows):
+            if r is None:
+                rows[i] = dict({c: None for c in COLUMNS}, input=str(paths[i]), status="error",
+                               error=f"not finished: {reason}")
+        raise
+    finally:
+        for f in futures:
+            f.cancel()
+        if owned_close is not None:
+            try:
+                owned_close()
+            except Exception:   # noqa: BLE001 - closing a cluster that is going away anyway
+                pass
+        if all(r is not None for r in rows):
+            counts = {s: sum(1 for r in rows if r["status"] == s) for s in ("ok", "skipped", "error")}
+            meta = {"job": job_name, "options": options, "tool": tool, "outdir": str(outdir),
+                    "started": started, "seconds": time.perf_counter() - t0, "meshes": len(rows),
+                    "counts": counts}
+            _write_tables(outdir, rows, meta)
+            _compact_manifest(outdir)
+    return rows
