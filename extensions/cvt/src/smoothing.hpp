@@ -20,7 +20,7 @@ struct SmoothParams {
   double max_deviation = 0;      // model units: the surface checks' bound (see below)
   double flip_max_normal_angle = 20.0;   // < 0: no flips
   // Model units; 0: off. After the passes, surface points farther than this from the mesh pull
-  // a corner of their nearest triangle part of the way towards them (see smoothing.cpp).
+  // a corner of their nearest triangle part of the way towards them (see pulls.hpp).
   double pull_distance = 0;
   // The cap flips first (remove_caps); and which vertices the moves try first (nullptr: all;
   // others only once their triangles change). The second run after the insertions of

@@ -1,9 +1,11 @@
 #pragma once
 // Small geometric helpers the remeshing passes share (internal to gsp::cvt).
+#include <gsp/closest_point.hpp>
 #include <gsp/mesh.hpp>
 #include <gsp/types.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -20,6 +22,43 @@ inline double min_angle(Vec3 a, Vec3 b, Vec3 c) {
 
 // Unnormalised normal of triangle (a, b, c).
 inline Vec3 normal(Vec3 a, Vec3 b, Vec3 c) { return cross(b - a, c - a); }
+
+// Distance from z to triangle (a, b, c): what the surface checks compare, point by point.
+inline double triangle_distance(Vec3 z, Vec3 a, Vec3 b, Vec3 c) {
+  const std::array<double, 3> w = closest_point_on_triangle(z, a, b, c);
+  return distance(z, w[0] * a + w[1] * b + w[2] * c);
+}
+inline double triangle_distance(Vec3 z, const TriangleMesh& m, const Triangle& t) {
+  return triangle_distance(z, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+}
+
+// The smallest angle of the mesh (10 when it has no triangle): the floor that moves and
+// insertions may not push a new triangle under.
+inline double mesh_min_angle(const TriangleMesh& m) {
+  double worst = 10;
+  for (const Triangle& t : m.triangles)
+    worst = std::min(worst, min_angle(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]));
+  return worst;
+}
+
+// The mean length of one edge per triangle: a length scale for grid cells and spacings, where
+// all the edges would cost more and say no more.
+inline double mean_edge_estimate(const TriangleMesh& m) {
+  double sum = 0;
+  for (const Triangle& t : m.triangles) sum += distance(m.positions[t[0]], m.positions[t[1]]);
+  return sum / double(std::max<std::size_t>(1, m.num_faces()));
+}
+
+// Area-weighted, unnormalised vertex normals: which sheet a point lies on, across a slit or
+// a thin wall.
+inline std::vector<Vec3> vertex_normals(const TriangleMesh& m) {
+  std::vector<Vec3> n(m.num_vertices());
+  for (const Triangle& t : m.triangles) {
+    const Vec3 f = normal(m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+    for (Index w : t) n[w] = n[w] + f;
+  }
+  return n;
+}
 
 // A directed edge as one hashable number.
 inline std::uint64_t edge_key(Index a, Index b) { return (std::uint64_t(a) << 32) | b; }

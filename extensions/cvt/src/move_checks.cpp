@@ -1,0 +1,150 @@
+#include "move_checks.hpp"
+#include "triangle_geometry.hpp"
+
+#include <gsp/connectivity.hpp>
+#include <gsp/cvt/closest_point_index.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace gsp::cvt::detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Largest distance to the surface of the centroids of v's triangles and the midpoints of
+// their edges at v, with v at x: the chords must not leave the surface.
+double deviation(const SmoothingContext& c, Index v, Vec3 x) {
+  double worst = 0;
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    const Vec3 b = c.m.positions[t[(k + 1) % 3]], d = c.m.positions[t[(k + 2) % 3]];
+    for (Vec3 s : {(x + b + d) * (1.0 / 3), 0.5 * (x + b), 0.5 * (x + d)})
+      worst = std::max(worst, c.index.closest(s).distance);
+  }
+  return worst;
+}
+
+// Points of the surface under v's triangles (v at x0; `normal`: theirs): x0, the surface
+// points nearest their edge midpoints at v and centroids, and the sample mesh's vertices
+// near v whose closest point on the triangles depends on v (not on the far edges, which
+// belong to the neighbours' triangles too): the input's tips and creases are among them.
+std::vector<Vec3> under_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal) {
+  std::vector<Vec3> under{x0};
+  double reach = 0;
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    const Vec3 b = c.m.positions[t[(k + 1) % 3]], e = c.m.positions[t[(k + 2) % 3]];
+    reach = std::max(reach, distance(x0, b));
+    for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
+      const SurfacePoint sp = c.index.closest(z);
+      if (sp.face != kInvalidIndex) under.push_back(sp.position);
+    }
+  }
+  c.grid.near(x0, reach, [&](Index w) {
+    if (dot(c.sample_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
+    const Vec3 z = c.samples.positions[w];
+    for (Index h : c.rings.around(v)) {
+      const Triangle& t = c.m.triangles[face_of(h)];
+      const Index k = corner_of(h);
+      const std::array<double, 3> wt =
+          closest_point_on_triangle(z, x0, c.m.positions[t[(k + 1) % 3]], c.m.positions[t[(k + 2) % 3]]);
+      if (wt[0] > 1e-9) {
+        under.push_back(z);
+        return;
+      }
+    }
+  });
+  return under;
+}
+
+// Distance from z to the triangles around v's neighbours that are not v's: they stay where
+// they are when v moves, and an upper bound of the distance to the rest of the mesh.
+double rest_distance(const SmoothingContext& c, Index v, Vec3 z) {
+  double d = 1e300;
+  for (Index h : c.rings.around(v))
+    for (Index u : c.m.triangles[face_of(h)]) {
+      if (u == v) continue;
+      for (Index k : c.rings.around(u)) {
+        const Triangle& t = c.m.triangles[face_of(k)];
+        if (t[0] == v || t[1] == v || t[2] == v) continue;
+        d = std::min(d, triangle_distance(z, c.m, t));
+      }
+    }
+  return d;
+}
+
+// The points under_points finds that a move of v could carry farther than max(bound, before)
+// from the mesh, and their distances to v's triangles before. A point the other triangles
+// around already keep within that bound stays within it whatever v does; checking it
+// against v's triangles alone blocked moves of vertices with long edges: on falconstatue's
+// base at 2,000 sites wall points 0.03-0.08 (6-17 times the bound) from a sliver's ring,
+// covered by their own triangles, grew by 1e-8 and refused every move.
+void watched_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal, double bound, std::vector<Vec3>& kept,
+                    std::vector<double>& before) {
+  kept.clear(), before.clear();
+  for (Vec3 z : under_points(c, v, x0, normal)) {
+    const double d = ring_distance(c, v, z, x0);
+    if (rest_distance(c, v, z) <= std::max(bound, d)) continue;
+    kept.push_back(z), before.push_back(d);
+  }
+}
+
+}  // namespace
+
+double signed_quality(const SmoothingContext& c, Index v, Vec3 x, bool check_fold, Vec3 nx) {
+  const double fold_cos = std::cos(40.0 * kPi / 180.0);
+  double worst = 10;
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    Vec3 q[3] = {c.m.positions[t[0]], c.m.positions[t[1]], c.m.positions[t[2]]};
+    Vec3 s[3] = {c.surf_n[t[0]], c.surf_n[t[1]], c.surf_n[t[2]]};
+    const Vec3 before = normal(q[0], q[1], q[2]);
+    q[k] = x, s[k] = nx;
+    const Vec3 after = normal(q[0], q[1], q[2]);
+    if (check_fold && dot(before, after) <= fold_cos * norm(before) * norm(after) &&
+        !(dot(after, s[0]) > 0 && dot(after, s[1]) > 0 && dot(after, s[2]) > 0))
+      return -10.0;
+    const double a = min_angle(q[0], q[1], q[2]);
+    const Vec3 sum = s[0] + s[1] + s[2];
+    worst = std::min(worst, norm(sum) >= 2.0 && dot(after, sum) < 0 ? -a : a);
+  }
+  return worst;
+}
+
+double plain_quality(const SmoothingContext& c, Index v, Vec3 x) {
+  double worst = 10;
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    Vec3 q[3] = {c.m.positions[t[0]], c.m.positions[t[1]], c.m.positions[t[2]]};
+    q[corner_of(h)] = x;
+    worst = std::min(worst, min_angle(q[0], q[1], q[2]));
+  }
+  return worst;
+}
+
+double ring_distance(const SmoothingContext& c, Index v, Vec3 z, Vec3 y) {
+  double d = 1e300;
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    d = std::min(d, triangle_distance(z, y, c.m.positions[t[(k + 1) % 3]], c.m.positions[t[(k + 2) % 3]]));
+  }
+  return d;
+}
+
+bool SurfaceGuard::keeps(Vec3 y) {
+  if (!has_deviation_) deviation0_ = deviation(c_, v_, x0_), has_deviation_ = true;
+  if (deviation(c_, v_, y) > std::max(deviation0_, bound_)) return false;
+  if (!has_watched_) watched_points(c_, v_, x0_, normal_, bound_, watched_, watched_before_), has_watched_ = true;
+  for (std::size_t i = 0; i < watched_.size(); ++i)
+    if (ring_distance(c_, v_, watched_[i], y) > std::max(watched_before_[i], bound_)) return false;
+  return true;
+}
+
+}  // namespace gsp::cvt::detail
