@@ -6,6 +6,7 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/intrinsic/bridge_vertices.hpp>
+#include <gsp/intrinsic/corner_rules.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
@@ -77,12 +78,10 @@ struct Entry {
   bool operator>(const Entry& o) const { return key > o.key; }
 };
 
-// Vertices no geodesic bends around (the core's flat kind, gsp/intrinsic/vertex_kinds.hpp):
-// interior with angle sum 2 pi, boundary with at most pi (a convex boundary corner), none on
-// a non-manifold edge. A wave that loses sight of such a vertex is carried straight on: every
-// unfolding around it agrees, so planes stay exact.
-std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connectivity& conn,
-                                        const std::vector<bool>& skipped) {
+// The core's vertex kinds (gsp/intrinsic/vertex_kinds.hpp: flat, saddle, convex) for the
+// corner rules (gsp/intrinsic/corner_rules.hpp); vertices on a non-manifold edge are plain.
+std::vector<std::uint8_t> corner_kinds(const TriangleMesh& mesh, const Connectivity& conn,
+                                       const std::vector<bool>& skipped) {
   std::vector<std::uint8_t> boundary_halfedge(3 * mesh.num_faces(), 0);
   std::vector<Index> nonmanifold;
   for (Index h = 0; h < Index(3 * mesh.num_faces()); ++h) {
@@ -94,9 +93,7 @@ std::vector<std::uint8_t> flat_vertices(const TriangleMesh& mesh, const Connecti
       nonmanifold.push_back(mesh.triangles[face_of(h)][(h + 1) % 3]);
     }
   }
-  std::vector<std::uint8_t> flat = intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped, nonmanifold);
-  for (std::uint8_t& k : flat) k = k == intrinsic::kFlatVertex;
-  return flat;
+  return intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped, nonmanifold);
 }
 
 class Propagation {
@@ -118,7 +115,7 @@ class Propagation {
     scale_ = edges ? total / double(edges) : 1.0;
     // The shared layer takes the skipped faces as bits (one conversion for both calls).
     const std::vector<bool> skipped_face(skipped_.begin(), skipped_.end());
-    flat_ = flat_vertices(mesh, conn_, skipped_face);
+    kinds_ = corner_kinds(mesh, conn_, skipped_face);
     bridge_.assign(mesh.num_vertices(), 0);
     // Bridges (gsp/intrinsic/bridge_vertices.hpp) pass their distance on as a point source.
     for (Index v : intrinsic::bridge_vertices(mesh, conn_, skipped_face))
@@ -327,13 +324,27 @@ class Propagation {
       const double via_b = segment_distance(B, a, b) + intrinsic::length(Q - B);
       kind = via_a <= via_b ? 1 : 2;
     }
-    // A flat end carries the wave straight on only where the line passes it closely: as in
-    // the core (propagation.hpp, kFlatMiss), farther out it could pass a curved vertex on the
-    // wrong side.
+    // The corner rules, as in the core: a bend at a flat, convex or saddle end reconsidered,
+    // a straight crossing checked at saddle ends. `crossing(lambda)` is the test above from
+    // the probe at lambda (0: P, 1: the centroid); a wave already reaching t's side is seen.
     const Triangle& tt = mesh_.triangles[t];
-    const bool near_end = miss <= kFlatMiss * scale_;
-    if (!same_side && near_end && kind == 1 && flat_[tt[k]]) kind = 0;
-    if (!same_side && near_end && kind == 2 && flat_[tt[(k + 1) % 3]]) kind = 0;
+    const std::uint8_t kind_a = kinds_[tt[k]], kind_b = kinds_[tt[(k + 1) % 3]];
+    if (!same_side) {
+      auto crossing = [&](double at) {
+        const Vec2 R = P + at * (C - P);
+        const Vec2 NR = detail::nearest_on_segment(R, a, b);
+        const double d = R.y - NR.y;
+        if (NR.y > eps || !(d > 0)) return 0;
+        const double xr = R.x + (NR.x - R.x) * (R.y / d);
+        return xr < -eps ? 1 : (xr > e1 + eps ? 2 : 0);
+      };
+      if (kind != 0)
+        kind = intrinsic::reconsider_bend(kind, kind == 1 ? kind_a : kind_b,
+                                          [&] { return miss <= kFlatMiss * scale_; }, crossing);
+      if (kind == 0 && e1 > 0)
+        kind = intrinsic::straight_past_saddles(kind_a == intrinsic::kSaddleVertex, kind_b == intrinsic::kSaddleVertex,
+                                                crossing);
+    }
 
     Wave n;
     n.segment = w.segment;
@@ -354,8 +365,8 @@ class Propagation {
         const double xc = P.x + (NP.x - P.x) * (P.y / (P.y - NP.y));
         side = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
       }
-      if (side == 1 && flat_[tt[k]]) side = 0;
-      if (side == 2 && flat_[tt[(k + 1) % 3]]) side = 0;
+      if (side == 1 && kind_a == intrinsic::kFlatVertex) side = 0;
+      if (side == 2 && kind_b == intrinsic::kFlatVertex) side = 0;
       if (side != 0) {
         const Vec2 corner = side == 1 ? A : B;
         bent = (k + 2) % 3;
@@ -373,7 +384,7 @@ class Propagation {
   LineOptions options_;
   Connectivity conn_;
   std::vector<FaceFrame> frames_;
-  std::vector<std::uint8_t> skipped_, flat_, bridge_;
+  std::vector<std::uint8_t> skipped_, kinds_, bridge_;
   std::vector<Index> bridge_pending_;
   std::vector<FaceWaves> faces_;
   std::vector<double> distance_;
