@@ -88,6 +88,50 @@ std::vector<PathPoint> edge_route(const TriangleMesh& mesh, const std::vector<In
   return points;
 }
 
+// The descent's bottom u as the path's start, in the first face round it (a vertex source);
+// `scale`, the longest first edge of u's faces, sizes what counts as at u.
+PathPoint vertex_start(const TriangleMesh& mesh, const Connectivity& conn, Index u, double& scale) {
+  PathPoint start;
+  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
+    const Index c = conn.vertex_corners[k];
+    const Index f = face_of(c);
+    const Triangle& t = mesh.triangles[f];
+    scale = std::max(scale, distance(mesh.positions[t[0]], mesh.positions[t[1]]));
+    if (start.face == kInvalidIndex) {
+      start.face = f;
+      start.barycentric = {0, 0, 0};
+      start.barycentric[corner_of(c)] = 1;
+      start.position = mesh.positions[u];
+    }
+  }
+  return start;
+}
+
+// A point source in a face round u: the face whose virtual source lies in it at sigma about 0
+// replaces u as the start; false where there is none.
+bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field, Index u,
+                       double scale, PathPoint& start) {
+  const std::vector<double>& d = field.vertex_distance;
+  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
+    const Index f = face_of(conn.vertex_corners[k]);
+    if (f >= field.face_sources.size() || !field.face_sources[f].reached()) continue;
+    const VirtualSource& vs = field.face_sources[f];
+    if (vs.sigma > 1e-9 * (1 + d[u])) continue;
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = vs.position - a;
+    const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+    const double den = d00 * d11 - d01 * d01;
+    if (!(den > 0)) continue;
+    const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den, b0 = 1 - b1 - b2;
+    if (std::min({b0, b1, b2}) < -1e-6 || distance(vs.position, mesh.positions[u]) <= 1e-9 * (1 + scale)) continue;
+    start.face = f;
+    start.barycentric = {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)};
+    start.position = vs.position;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
@@ -106,40 +150,10 @@ bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const Geod
   const Index u = chain.front();
   // The source near the bottom: a face round u whose virtual source lies in it at sigma about
   // 0 (a point source in a face), else u itself (a vertex source).
-  PathPoint start;
-  bool found_face_source = false;
   double scale = 0;
-  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
-    const Index c = conn.vertex_corners[k];
-    const Index f = face_of(c);
-    const Triangle& t = mesh.triangles[f];
-    scale = std::max(scale, distance(mesh.positions[t[0]], mesh.positions[t[1]]));
-    if (start.face == kInvalidIndex) {
-      start.face = f;
-      start.barycentric = {0, 0, 0};
-      start.barycentric[corner_of(c)] = 1;
-      start.position = mesh.positions[u];
-    }
-  }
+  PathPoint start = vertex_start(mesh, conn, u, scale);
   if (start.face == kInvalidIndex) return false;
-  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
-    const Index f = face_of(conn.vertex_corners[k]);
-    if (f >= field.face_sources.size() || !field.face_sources[f].reached()) continue;
-    const VirtualSource& vs = field.face_sources[f];
-    if (vs.sigma > 1e-9 * (1 + d[u])) continue;
-    const Triangle& t = mesh.triangles[f];
-    const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = vs.position - a;
-    const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
-    const double den = d00 * d11 - d01 * d01;
-    if (!(den > 0)) continue;
-    const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den, b0 = 1 - b1 - b2;
-    if (std::min({b0, b1, b2}) < -1e-6 || distance(vs.position, mesh.positions[u]) <= 1e-9 * (1 + scale)) continue;
-    start.face = f;
-    start.barycentric = {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)};
-    start.position = vs.position;
-    found_face_source = true;
-    break;
-  }
+  const bool found_face_source = face_source_start(mesh, conn, field, u, scale, start);
   // Neither a point source in a face round u nor a source at u (distance 0 there): the field
   // bottoms out somewhere else than at a source, and this route cannot be trusted (a vertex
   // source with an initial offset lands here too: the walk handles those).

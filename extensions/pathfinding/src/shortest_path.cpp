@@ -158,6 +158,73 @@ void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const E
   }
 }
 
+// One query as its steps share it: the inputs, the field from `from`, what the surface test
+// needs, and per end the verdict so far. A walk that cannot be completed in this field (and
+// whose descent fallback fails too) is kept as an error: the far end's field may still give
+// the path.
+struct Query {
+  const GeodesicSolver& solver;
+  const PathTracer& tracer;
+  const TriangleMesh& mesh;
+  const Endpoint& from;
+  const std::vector<Endpoint>& to;
+  const GeodesicResult& field;
+  double tolerance;
+  Vec3 from_pos;
+  std::vector<std::exception_ptr> failed;
+  std::vector<bool> invalid;
+};
+
+// Every end's path walked back in the field from `from`: the first candidate, checked to lie
+// on the surface.
+void trace_forward(Query& q, PathQueryResult& r) {
+  r.paths.resize(q.to.size());
+  for (std::size_t k = 0; k < q.to.size(); ++k) {
+    try {
+      r.paths[k] = q.tracer.trace(q.field, q.to[k]);
+      snap_start(q.mesh, r.paths[k].points, q.from);
+      r.paths[k].length = polyline_length(r.paths[k].points);
+      if (!on_surface(q.mesh, r.paths[k].points, q.from_pos, endpoint_position(q.mesh, q.to[k]), q.tolerance))
+        q.invalid[k] = true;
+    } catch (const NoPath&) {
+      // unreachable: an empty path
+    } catch (const Error&) {
+      q.failed[k] = std::current_exception();
+    }
+  }
+}
+
+// The field grown from end k accumulates its errors from the other end, so near from's cut
+// locus it may pick the shorter side: its path, walked back to `from`, replaces a failed,
+// invalid or longer forward path.
+void trace_back(Query& q, const GeodesicOptions& back_options, std::size_t k, PathQueryResult& r) {
+  GeodesicPath& path = r.paths[k];
+  if (!q.failed[k] && !q.invalid[k] && (!path.found() || !(path.length > 0))) return;
+  auto t0 = Clock::now();
+  const GeodesicResult back_field = q.solver.compute({to_source(q.to[k])}, back_options);
+  r.compute_seconds += seconds_since(t0);
+  add_stats(r.reverse_stats, back_field.stats);
+  t0 = Clock::now();
+  try {
+    GeodesicPath back = q.tracer.trace(back_field, q.from);
+    snap_start(q.mesh, back.points, q.to[k]);
+    const bool back_valid =
+        back.found() && on_surface(q.mesh, back.points, endpoint_position(q.mesh, q.to[k]), q.from_pos, q.tolerance);
+    if (back_valid && (q.failed[k] || q.invalid[k] || polyline_length(back.points) < path.length)) {
+      if (q.failed[k] || q.invalid[k]) path.field_distance = field_at(q.mesh, q.field, q.to[k]);
+      path.points = reversed(q.mesh, back.points);
+      path.length = polyline_length(path.points);
+      path.source = 0;
+      q.failed[k] = nullptr;
+      q.invalid[k] = false;
+      ++r.reversed;
+    }
+  } catch (const Error&) {
+    // The walk back from `from` failed in this field: the forward path stands.
+  }
+  r.trace_seconds += seconds_since(t0);
+}
+
 }  // namespace
 
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
@@ -171,60 +238,15 @@ PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& t
   r.compute_seconds = seconds_since(t0);
   r.stats = field.stats;
   t0 = Clock::now();
-  // A walk that cannot be completed in this field (and whose descent fallback fails too) is
-  // kept as an error: the far end's field may still give the path.
-  std::vector<std::exception_ptr> failed(to.size());
-  std::vector<bool> invalid(to.size(), false);
-  const BoundingBox box = bounding_box(mesh);
-  const double tolerance = 1e-6 * box.diagonal();
-  const Vec3 from_pos = endpoint_position(mesh, from);
-  r.paths.resize(to.size());
-  for (std::size_t k = 0; k < to.size(); ++k) {
-    try {
-      r.paths[k] = tracer.trace(field, to[k]);
-      snap_start(mesh, r.paths[k].points, from);
-      r.paths[k].length = polyline_length(r.paths[k].points);
-      if (!on_surface(mesh, r.paths[k].points, from_pos, endpoint_position(mesh, to[k]), tolerance))
-        invalid[k] = true;
-    } catch (const NoPath&) {
-      // unreachable: an empty path
-    } catch (const Error&) {
-      failed[k] = std::current_exception();
-    }
-  }
+  Query q{solver, tracer, mesh, from, to, field, 1e-6 * bounding_box(mesh).diagonal(), endpoint_position(mesh, from),
+          std::vector<std::exception_ptr>(to.size()), std::vector<bool>(to.size(), false)};
+  trace_forward(q, r);
   r.trace_seconds = seconds_since(t0);
-  if (!options.both_ends) {
-    edge_safety_net(mesh, tracer, from, to, field, invalid, failed, r);
-    return r;
+  if (options.both_ends) {
+    const GeodesicOptions back_options = field_options(mesh, {from}, options);
+    for (std::size_t k = 0; k < to.size(); ++k) trace_back(q, back_options, k, r);
   }
-  const GeodesicOptions back_options = field_options(mesh, {from}, options);
-  for (std::size_t k = 0; k < to.size(); ++k) {
-    GeodesicPath& path = r.paths[k];
-    if (!failed[k] && !invalid[k] && (!path.found() || !(path.length > 0))) continue;
-    t0 = Clock::now();
-    const GeodesicResult back_field = solver.compute({to_source(to[k])}, back_options);
-    r.compute_seconds += seconds_since(t0);
-    add_stats(r.reverse_stats, back_field.stats);
-    t0 = Clock::now();
-    try {
-      GeodesicPath back = tracer.trace(back_field, from);
-      snap_start(mesh, back.points, to[k]);
-      const bool back_valid = back.found() && on_surface(mesh, back.points, endpoint_position(mesh, to[k]), from_pos, tolerance);
-      if (back_valid && (failed[k] || invalid[k] || polyline_length(back.points) < path.length)) {
-        if (failed[k] || invalid[k]) path.field_distance = field_at(mesh, field, to[k]);
-        path.points = reversed(mesh, back.points);
-        path.length = polyline_length(path.points);
-        path.source = 0;
-        failed[k] = nullptr;
-        invalid[k] = false;
-        ++r.reversed;
-      }
-    } catch (const Error&) {
-      // The walk back from `from` failed in this field: the forward path stands.
-    }
-    r.trace_seconds += seconds_since(t0);
-  }
-  edge_safety_net(mesh, tracer, from, to, field, invalid, failed, r);
+  edge_safety_net(mesh, tracer, from, to, field, q.invalid, q.failed, r);
   return r;
 }
 

@@ -1,0 +1,129 @@
+// The walk's moves: the straight stretch inside a face, the turn at a vertex, the step across
+// an edge into the neighbour (walk.hpp).
+#include "walk.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gsp::pathfinding::detail {
+
+bool Walk::exit_of(const Walker& w, double& t_exit, int& exit_corner, Bary& bs) const {
+  if (!bary_of(w.face, w.target, bs)) return false;
+  t_exit = 1;
+  exit_corner = -1;
+  for (int i = 0; i < 3; ++i) {
+    const double bi = std::max(0.0, w.bary[i]);
+    if (!(bs[i] < -kBaryTol)) continue;   // the target on the inner side of edge i (or on it)
+    // Running along the edge we came in by (the target on its line up to rounding): do not
+    // bounce back across it.
+    const double size = std::max({1.0, std::abs(bs[0]), std::abs(bs[1]), std::abs(bs[2])});
+    if (w.entry != kInvalidIndex && bi <= kVertexTol && Index(i) == corner_of(prev_halfedge(w.entry)) &&
+        bs[i] > -1e-4 * size)
+      continue;
+    const double t = bi / (bi - bs[i]);
+    if (t < t_exit) t_exit = t, exit_corner = i;
+  }
+  return true;
+}
+
+// At vertex v: either v is the source, or the path goes on into the incident face whose own
+// source explains v's distance best (the smallest sigma + |v - S|), preferring faces the
+// straight line v -> S actually enters. `keep` when the source w carries is shorter than all.
+Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
+  const Vec3 pv = mesh_.positions[v];
+  double best = kInf, best_any = kInf;
+  Index best_corner = kInvalidIndex, best_any_corner = kInvalidIndex, at_v = kInvalidIndex;
+  for (Index k = conn_.vertex_corner_begin[v]; k < conn_.vertex_corner_begin[v + 1]; ++k) {
+    const Index c = conn_.vertex_corners[k];
+    const Index f = face_of(c);
+    if (!usable(f)) continue;
+    const VirtualSource& s = field_.face_sources[f];
+    if (distance(s.position, pv) <= 10 * eps_) {
+      // The face's source sits on v: v is the real source (sigma 0), or the path turned here
+      // and this face does not lead further.
+      if (s.sigma <= eps_) {
+        out_.source = s.source;
+        return VertexStep::source;
+      }
+      at_v = f;
+      continue;
+    }
+    const double d = own_value(f, pv);
+    Bary bs;
+    bary_of(f, s.position, bs);
+    const Index i = corner_of(c), j = (i + 1) % 3, l = (i + 2) % 3;
+    const bool enters = bs[j] >= -kBaryTol && bs[l] >= -kBaryTol;
+    if (d < best_any) best_any = d, best_any_corner = c;
+    if (enters && d < best) best = d, best_corner = c;
+  }
+  // A carried source clearly shorter than any face's own: go on with it.
+  const double carried = w.face != kInvalidIndex && w.sigma < kInf ? w.value() : kInf;
+  const double tol = 1e-6 * carried + 10 * eps_;
+  if (best_corner != kInvalidIndex && best > carried + tol) best_corner = kInvalidIndex;
+  if (best_corner == kInvalidIndex && best_any <= carried + tol) best_corner = best_any_corner, best = best_any;
+  if (best_corner == kInvalidIndex) {
+    if (carried < kInf) return VertexStep::keep;
+    // Every reached face has its source on v: a vertex source with an initial offset.
+    if (at_v != kInvalidIndex) {
+      out_.source = field_.face_sources[at_v].source;
+      return VertexStep::source;
+    }
+    return VertexStep::stuck;
+  }
+  w.face = face_of(best_corner);
+  w.bary = corner_bary(corner_of(best_corner));
+  w.position = pv;
+  w.entry = kInvalidIndex;
+  adopt_own(w);
+  return VertexStep::moved;
+}
+
+// Crosses halfedge h of `from` at its point bq into the neighbour that continues the path best
+// (at a non-manifold edge: the smallest own distance at the crossing), carrying from's target
+// over, unfolded about the edge into the neighbour's plane.
+bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const {
+  const Index a = from_vertex(mesh_, h), b = to_vertex(mesh_, h);
+  const double wa = bq[corner_of(h)], wb = bq[corner_of(next_halfedge(h))];
+  const double s = wa + wb > 0 ? wb / (wa + wb) : 0.5;   // q = (1 - s) a + s b
+  const Vec3 q = from.position;
+  double best = kInf;
+  Index pick = kInvalidIndex;
+  for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
+    const Index f = face_of(g);
+    if (f == from.face || !usable(f)) continue;
+    const double d = own_value(f, q);
+    if (pick == kInvalidIndex || d < best) best = d, pick = g;
+  }
+  if (pick == kInvalidIndex) return false;
+  const Index f = face_of(pick);
+  to = from;
+  to.face = f;
+  to.bary = {0, 0, 0};
+  const bool same = from_vertex(mesh_, pick) == a;   // the neighbour may walk the edge either way
+  to.bary[corner_of(pick)] = same ? 1 - s : s;
+  to.bary[corner_of(next_halfedge(pick))] = same ? s : 1 - s;
+  to.entry = pick;
+  // Unfold: edge frame (x along a -> b, y towards each face's third corner); the target lies on
+  // the far side of the edge seen from `from`, i.e. on the neighbour's side.
+  const Vec3 pa = mesh_.positions[a], pb = mesh_.positions[b];
+  const double len = distance(pa, pb);
+  const Vec3 c_from = mesh_.positions[mesh_.triangles[from.face][corner_of(prev_halfedge(h))]];
+  const Vec3 c_to = mesh_.positions[mesh_.triangles[f][corner_of(prev_halfedge(pick))]];
+  if (!(len > 0)) {
+    adopt_own(to);
+    return true;
+  }
+  const Vec3 ex = (1.0 / len) * (pb - pa);
+  auto normal_dir = [&](Vec3 c) {
+    const Vec3 y = (c - pa) - dot(c - pa, ex) * ex;
+    const double n = norm(y);
+    return n > 0 ? (1.0 / n) * y : Vec3{};
+  };
+  const Vec3 yf = normal_dir(c_from), yt = normal_dir(c_to);
+  const double x = dot(from.target - pa, ex), y = dot(from.target - pa, yf);
+  to.target = pa + x * ex - y * yt;
+  to.own = false;
+  return true;
+}
+
+}  // namespace gsp::pathfinding::detail
