@@ -7,6 +7,7 @@
 #include <gsp/cli/load.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/cli/progress.hpp>
+#include <gsp/cli/memory.hpp>
 #include <gsp/cli/timer.hpp>
 #include <gsp/errors.hpp>
 
@@ -155,6 +156,31 @@ TEST(CliTimer, AccumulatesPhasesInOrder) {
   const auto v = parse_json(text);
   EXPECT_TRUE(v.has("layout"));
   EXPECT_GE(v["total"].num, 0.0);
+}
+
+// The peak resident memory after each phase: a real reading of this process (it holds at
+// least the 64 MB touched here), never lower for a later phase, per vertex when told the count.
+TEST(CliTimer, PeakMemoryPerPhase) {
+  gsp::cli::PhaseTimer t;
+  t.add("read", 0.1);
+  std::vector<char> block(64u << 20);
+  for (std::size_t i = 0; i < block.size(); i += 4096) block[i] = char(i);
+  t.add("compute", 0.2);
+  const gsp::cli::ResidentMemory now = gsp::cli::resident_memory();
+  EXPECT_GE(now.current, block.size());
+  EXPECT_GE(now.peak, now.current);
+  gsp::cli::Json memory = gsp::cli::Json::object();
+  memory["state_bytes_per_vertex"] = 1.5;   // an app's own member stays
+  t.write_memory(memory, 1000);
+  const auto v = parse_json(memory.dump(-1));
+  EXPECT_EQ(v["state_bytes_per_vertex"].num, 1.5);
+  const double read = v["peak_after"]["read"].num, compute = v["peak_after"]["compute"].num;
+  EXPECT_GT(read, 0.0);
+  EXPECT_GE(compute, read);
+  EXPECT_GE(compute, 0.95 * double(now.current));   // the block was resident when compute ended
+  EXPECT_GE(v["peak_bytes"].num, compute);
+  EXPECT_DOUBLE_EQ(v["peak_after_per_vertex"]["compute"].num, compute / 1000);
+  EXPECT_EQ(int(block[4096]), int(char(4096)));
 }
 
 TEST(CliErrors, OneLineMessages) {

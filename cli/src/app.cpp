@@ -44,6 +44,7 @@ void Context::open_stats() {
 void Context::write_stats() {
   if (!stats_requested()) return;
   stats_["timings"] = timer_.to_json();
+  timer_.write_memory(stats_["memory"], vertices_);
   const std::string text = stats_.dump() + "\n";
   if (stats_to_stdout()) {
     std::fwrite(text.data(), 1, text.size(), stdout);

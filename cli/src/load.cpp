@@ -133,6 +133,7 @@ LoadedMesh load_input(Context& ctx, const std::string& path, const LoadOptions& 
   in["file_faces"] = out.info.file_faces;
   in["triangles"] = out.mesh.num_faces();
   in["vertices"] = out.mesh.num_vertices();
+  ctx.set_vertices(out.mesh.num_vertices());
   in["welded"] = out.welded;
   in["merged_vertices"] = out.merged;
   Json& s = ctx.settings();

@@ -39,6 +39,7 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <cstddef>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -76,6 +77,9 @@ class Context {
   Json& settings() { return stats_["settings"]; }      // the method's settings
   Json& operations() { return stats_["operations"]; }  // operation counts
   PhaseTimer& timer() { return timer_; }
+  // The mesh's vertex count (load_input sets it): the "memory" object of the stats then gives
+  // the peaks per vertex too.
+  void set_vertices(std::size_t n) { vertices_ = n; }
 
   bool stats_requested() const { return !stats_path_.empty(); }
   // True for "--stats -": stdout carries the stats JSON, so the app must print nothing else
@@ -104,6 +108,7 @@ class Context {
   std::string input_path_;
   Json stats_;
   PhaseTimer timer_;
+  std::size_t vertices_ = 0;
   std::unique_ptr<io::AtomicFile> stats_file_;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
-// Wall-clock timings of the phases of a run, for the "timings" object of --stats.
+// Wall-clock timings of the phases of a run, for the "timings" object of --stats, and the
+// process's peak resident memory at the end of each phase, for its "memory" object.
 //
 // The contract's phases are read, build, layout, compute and write; apps may add their own.
 // A phase timed twice accumulates. steady_clock: immune to clock changes during a run.
@@ -11,6 +12,7 @@
 #include <gsp/cli/json.hpp>
 
 #include <chrono>
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,7 +25,8 @@ class PhaseTimer {
 
   PhaseTimer() : start_(Clock::now()) {}
 
-  // Adds `seconds` to phase `name` (created on first use, in first-use order).
+  // Adds `seconds` to phase `name` (created on first use, in first-use order) and notes the
+  // peak resident memory so far as the phase's.
   void add(const std::string& name, double seconds);
   // Seconds spent in `name` so far (0 if never timed).
   double seconds(const std::string& name) const;
@@ -65,10 +68,20 @@ class PhaseTimer {
 
   // {"phase": seconds, ..., "total": seconds since construction}.
   Json to_json() const;
+  // Into `memory` (other members kept): "peak_bytes", the run's peak so far, and "peak_after":
+  // {"phase": the peak when it ended}; with vertices > 0 also "peak_bytes_per_vertex" and
+  // "peak_after_per_vertex".
+  void write_memory(Json& memory, std::size_t vertices) const;
 
  private:
+  struct Phase {
+    std::string name;
+    double seconds = 0;
+    std::size_t peak_after = 0;   // bytes of resident memory, the peak when the phase last ended
+  };
   Clock::time_point start_;
-  std::vector<std::pair<std::string, double>> phases_;
+  std::vector<Phase> phases_;
+  std::size_t peak_ = 0;   // the largest peak read so far
 };
 
 }  // namespace gsp::cli
