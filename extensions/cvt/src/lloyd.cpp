@@ -143,14 +143,7 @@ class Lloyd {
     // At most max_added_fraction * N sites in all: on CAD meshes (creases, slivers, thin
     // walls) the fixes would otherwise keep finding regions to split.
     const std::size_t cap = std::size_t(o_.max_added_fraction * double(stats_.initial_sites));
-    std::size_t kept = 0;
-    for (const SurfaceSite& s : added) {
-      if (s.face == kInvalidIndex || stats_.sites_added >= cap) continue;
-      sites.push_back(s);
-      ++stats_.sites_added;
-      ++kept;
-    }
-    added.resize(kept);
+    added.resize(append_capped(added, sites, stats_.sites_added, cap));
     stats_.timings.fix += seconds_since(t0);
     return !added.empty() || !lost.empty();
   }
@@ -163,13 +156,7 @@ class Lloyd {
     const auto t0 = Clock::now();
     std::vector<SurfaceSite> added;
     fix_junctions(e, sites, added);
-    std::size_t kept = 0;
-    for (const SurfaceSite& s : added) {
-      if (s.face == kInvalidIndex || stats_.closing_sites >= cap) continue;
-      sites.push_back(s);
-      ++stats_.closing_sites;
-      ++kept;
-    }
+    const std::size_t kept = append_capped(added, sites, stats_.closing_sites, cap);
     stats_.timings.fix += seconds_since(t0);
     return kept > 0;
   }
@@ -210,6 +197,20 @@ class Lloyd {
 
  private:
   double min_piece_area(std::size_t sites) const { return 0.2 * g_.total_area / double(std::max<std::size_t>(sites, 1)); }
+
+  // The valid sites of `added` appended to `sites` while `counter` (counted up) is below
+  // `cap`; returns how many were appended.
+  static std::size_t append_capped(const std::vector<SurfaceSite>& added, std::vector<SurfaceSite>& sites,
+                                   std::size_t& counter, std::size_t cap) {
+    std::size_t kept = 0;
+    for (const SurfaceSite& s : added) {
+      if (s.face == kInvalidIndex || counter >= cap) continue;
+      sites.push_back(s);
+      ++counter;
+      ++kept;
+    }
+    return kept;
+  }
 
   static std::vector<Index> faces_of(const std::vector<SurfaceSite>& sites) {
     std::vector<Index> f(sites.size());
