@@ -1,10 +1,12 @@
 // gsp-geodesic end to end: the binary's outputs agree value by value with the library, in the
 // file's own vertex order, in every format; errors follow the CLI contract.
 #include "apps_support.hpp"
+#include "helpers/mesh_builders.hpp"
 #include "test_data.hpp"
 
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/layout.hpp>
 #include <gsp/render/image.hpp>
 #include <gsp/weld.hpp>
 
@@ -134,6 +136,41 @@ TEST(GeodesicApp, ErrorsFollowTheContract) {
 
 namespace gsp::test {
 namespace {
+
+// --layout auto (the default): one field on a file whose order is coherent runs in the
+// file's order (the clustering costs more than it saves there, docs/scale.md); a shuffled file,
+// several fields, or --layout on get the clustering. A plane is exact either way.
+TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
+  ScratchDir dir("geodesic");
+  const TriangleMesh rows = grid(60);   // row-major: neighbours 1 or 61 apart
+  io::write_mesh((dir / "rows.off").string(), rows);
+  io::write_mesh((dir / "shuffled.off").string(), apply_layout(rows, random_layout(rows, 3)));
+  auto layout_of = [&](const std::string& file, const std::string& options, std::string out = "d.txt") {
+    const auto r = run(quote(bin(kApp)) + " " + quote((dir / file).string()) + " " + options + " -o " +
+                           quote((dir / out).string()) + " --stats -",
+                       dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const JsonValue j = parse_json(r.out);
+    return j["settings"]["layout"].str;
+  };
+  EXPECT_EQ(layout_of("rows.off", "--source-vertex 0", "auto.txt"), "input order");
+  EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0"), "bottom-up clustering");
+  EXPECT_EQ(layout_of("rows.off", "--source-vertex 0 --layout on", "on.txt"), "bottom-up clustering");
+  EXPECT_EQ(layout_of("rows.off", "--source-vertex 0,5 --separate", "sep.txt"), "bottom-up clustering");
+  EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0 --layout off"), "input order");
+  EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0 --no-layout"), "input order");
+  const auto a = io::read_values_txt((dir / "auto.txt").string()), b = io::read_values_txt((dir / "on.txt").string());
+  ASSERT_EQ(a.size(), rows.num_vertices());
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    EXPECT_NEAR(a[v], norm(rows.positions[v]), 1e-5 * (1 + a[v])) << v;
+    EXPECT_NEAR(a[v], b[v], 1e-5 * (1 + a[v])) << v;
+  }
+  EXPECT_EQ(run(quote(bin(kApp)) + " " + quote((dir / "rows.off").string()) + " --source-vertex 0 --layout maybe -o " +
+                    quote((dir / "x.txt").string()),
+                dir)
+                .exit_code,
+            2);
+}
 
 TEST(GeodesicApp, SeparateFieldsAndMatrixMatchSingleRuns) {
   ScratchDir dir("geodesic");

@@ -1,6 +1,7 @@
 // gsp-geodesic: geodesic distances on a triangle mesh from vertices, surface points or points
 // inside faces, by Geodesic Source Propagation (or Dijkstra on edges, for comparison).
 #include "batch_output.hpp"
+#include "layout_choice.hpp"
 #include "line_sources.hpp"
 #include "metric_option.hpp"
 #include "options.hpp"
@@ -123,8 +124,9 @@ void run(cli::Context& ctx, const Options& o) {
     DijkstraSolver solver = ctx.timer().time("build", [&] { return DijkstraSolver(in.mesh); });
     result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, max_distance); });
   } else {
+    const LayoutChoice layout = choose_layout(o.no_layout ? "off" : o.layout, in.mesh, !(o.separate || o.matrix));
     SolverOptions so;
-    so.optimize_layout = !o.no_layout;
+    so.optimize_layout = layout.optimize;
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     so.edge_lengths = metric_lengths(ctx, metric, in);
@@ -145,6 +147,11 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["heuristic"] = o.heuristic;
     ctx.settings()["step"] = o.f;
     ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";
+    ctx.settings()["layout_reason"] = layout.reason;
+    if (layout.random_gap > 0) {
+      ctx.operations()["file_order_log_gap"] = layout.file_gap;
+      ctx.operations()["random_order_log_gap"] = layout.random_gap;
+    }
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
     ctx.stats()["memory"]["state_bytes_per_vertex"] =

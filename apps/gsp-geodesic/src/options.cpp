@@ -50,7 +50,11 @@ void add_options(CLI::App& app, Options& o) {
                  "with 20 numbers");
   app.add_option("--step", o.f, "dual-queue step f in mean edge lengths (default 1)")
       ->check(CLI::PositiveNumber);
-  app.add_flag("--no-layout", o.no_layout, "keep the input's memory layout (no cache reordering)");
+  app.add_option("--layout", o.layout,
+                 "cache reordering: auto (default: on, except for one field on a file whose order is already "
+                 "coherent), on, off")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
+  app.add_flag("--no-layout", o.no_layout, "the same as --layout off");
   app.add_flag("--input-faces", o.input_faces,
                "propagate on the input's triangles, not on their intrinsic Delaunay flip");
   app.add_flag("--labels", o.labels, "also write the index of the nearest source per vertex");

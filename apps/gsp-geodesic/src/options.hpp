@@ -27,7 +27,8 @@ struct Options {
   std::string precision = "auto";
   std::string heuristic = "published";        // published | centroid | opposite-corner | FILE
   double f = 1.0;
-  bool no_layout = false;
+  std::string layout = "auto";                // auto | on | off (layout_choice.hpp)
+  bool no_layout = false;                     // = --layout off
   bool input_faces = false;
   bool ascii = false;
   bool labels = false;
