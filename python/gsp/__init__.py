@@ -42,9 +42,11 @@ _SOLVER_KEYWORDS = ("intrinsic_delaunay", "metric", "optimize_layout")
 def geodesic_distance(V, F, sources, **options):
     """One-off geodesic distance from `sources` to every vertex: an (n,) float64 array.
 
-    Takes GeodesicSolver's keywords (intrinsic_delaunay, metric, optimize_layout) and
-    GeodesicSolver.distance's (max_distance, strategy, threads, labels, precision, relax).
-    For several queries on one mesh, build a GeodesicSolver once instead.
+    Takes GeodesicSolver's keywords (intrinsic_delaunay, metric, optimize_layout: "auto" here,
+    the cache layout only where the arrays' own order is scattered, which is what pays for one
+    query) and GeodesicSolver.distance's (max_distance, strategy, threads, labels, precision,
+    relax). For several queries on one mesh, build a GeodesicSolver once instead.
     """
     solver_options = {k: options.pop(k) for k in _SOLVER_KEYWORDS if k in options}
+    solver_options.setdefault("optimize_layout", "auto")
     return GeodesicSolver(V, F, **solver_options).distance(sources, **options)

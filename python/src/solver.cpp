@@ -9,6 +9,7 @@
 #include "surface_point.hpp"
 
 #include <gsp/batch.hpp>
+#include <gsp/layout.hpp>
 #include <gsp/strategy_names.hpp>
 
 #include <algorithm>
@@ -111,7 +112,10 @@ GeodesicOptions query_options(double max_distance, const std::string& strategy, 
 }
 
 Solver::Solver(TriangleMesh mesh, const SolverOptions& options, bool metric)
-    : mesh_(std::make_unique<TriangleMesh>(std::move(mesh))), solver_(*mesh_, options), metric_(metric) {}
+    : mesh_(std::make_unique<TriangleMesh>(std::move(mesh))),
+      solver_(*mesh_, options),
+      metric_(metric),
+      layout_(options.optimize_layout) {}
 
 GeodesicResult Solver::compute(const std::vector<Source>& sources, GeodesicOptions options) const {
   struct InFlight {
@@ -158,6 +162,21 @@ std::shared_ptr<const GeodesicResult> Solver::field_with_sources(const std::vect
   return field;
 }
 
+namespace {
+
+// optimize_layout: True, False or "auto" (gsp::order_coherence decides).
+bool layout_from(const py::handle& value, const TriangleMesh& mesh) {
+  if (py::isinstance<py::str>(value)) {
+    if (value.cast<std::string>() != "auto")
+      throw py::value_error("optimize_layout must be True, False or \"auto\", not \"" + value.cast<std::string>() + "\"");
+    return !order_coherence(mesh).coherent;
+  }
+  if (!py::isinstance<py::bool_>(value)) throw py::type_error("optimize_layout must be True, False or \"auto\"");
+  return value.cast<bool>();
+}
+
+}  // namespace
+
 void bind_solver(py::module_& m) {
   py::class_<Solver> cls(m, "GeodesicSolver", R"(A triangle mesh prepared once for any number of geodesic queries.
 
@@ -167,20 +186,24 @@ V (n, 3) float, F (m, 3) int. Non-manifold, degenerate and soup meshes are accep
 that repeat a vertex are left out). intrinsic_delaunay propagates on the intrinsic Delaunay
 triangulation (same surface, better-shaped triangles); metric is a gsp.metric.Metric (or a
 (3,3) tensor, or (n,3,3) / (m,3,3) tensors) to measure lengths in; optimize_layout reorders
-the faces for the cache (results keep the input's order). Every method releases the GIL, so
-threads can query one solver in parallel.)");
+the faces for the cache (results keep the input's order): True, False, or "auto" (reorder
+unless the arrays' own order is already coherent: what pays for a single query, the default of
+gsp.geodesic_distance; see docs/scale.md). Every method releases the GIL, so threads can query
+one solver in parallel.)");
   cls.def(py::init([](const py::handle& V, const py::handle& F, bool intrinsic_delaunay, const py::handle& metric,
-                      bool optimize_layout) {
+                      const py::handle& optimize_layout) {
             TriangleMesh mesh = mesh_from_arrays(V, F);
             if (mesh.num_faces() == 0) throw py::value_error("F is empty: a GeodesicSolver needs faces (see PointCloudSolver)");
             SolverOptions options = metric_solver_options(mesh, metric);
             options.intrinsic_delaunay = intrinsic_delaunay;
-            options.optimize_layout = optimize_layout;
+            options.optimize_layout = layout_from(optimize_layout, mesh);
             py::gil_scoped_release nogil;
             return std::make_unique<Solver>(std::move(mesh), options, !options.edge_lengths.empty());
           }),
           py::arg("V"), py::arg("F"), py::kw_only(), py::arg("intrinsic_delaunay") = true, py::arg("metric") = py::none(),
           py::arg("optimize_layout") = true);
+  cls.def_property_readonly("optimize_layout", &Solver::layout_applied,
+                            "whether the faces were reordered for the cache (\"auto\" resolved)");
   cls.def_property_readonly("num_vertices", [](const Solver& s) { return s.mesh().num_vertices(); });
   cls.def_property_readonly("num_faces", [](const Solver& s) { return s.mesh().num_faces(); });
   cls.def(

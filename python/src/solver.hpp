@@ -27,6 +27,7 @@ class Solver {
   const TriangleMesh& mesh() const { return *mesh_; }
   const GeodesicSolver& solver() const { return solver_; }
   bool has_metric() const { return metric_; }
+  bool layout_applied() const { return layout_; }
   // Connectivity for tracing paths; built once, on the first path query (thread-safe).
   const pathfinding::PathTracer& tracer() const;
   // Per-face virtual sources are a 3D construction: not available with a metric.
@@ -46,6 +47,7 @@ class Solver {
   std::unique_ptr<TriangleMesh> mesh_;   // stable address: the solver and tracer refer to it
   GeodesicSolver solver_;
   bool metric_ = false;
+  bool layout_ = true;
   mutable std::atomic<int> in_flight_{0};
   mutable std::once_flag tracer_once_;
   mutable std::unique_ptr<pathfinding::PathTracer> tracer_;

@@ -81,6 +81,29 @@ def test_one_off_and_options(plane):
     np.testing.assert_allclose(bounded[a < 0.5], a[a < 0.5], rtol=1e-5, atol=1e-6)
 
 
+def test_layout_auto_follows_the_arrays_order(plane):
+    """optimize_layout="auto" (gsp.geodesic_distance's default) skips the cache layout for arrays
+    whose own order is coherent (the row-major grid) and keeps it for a shuffled copy; the
+    solver's default stays True (many queries); the distances agree on the plane."""
+    V, F = plane
+    assert gsp.GeodesicSolver(V, F).optimize_layout is True
+    assert gsp.GeodesicSolver(V, F, optimize_layout="auto").optimize_layout is False
+    assert gsp.GeodesicSolver(V, F, optimize_layout=False).optimize_layout is False
+    perm = np.random.default_rng(5).permutation(len(V))
+    rank = np.empty_like(perm)
+    rank[perm] = np.arange(len(V))
+    Vs, Fs = V[perm], rank[F]
+    assert gsp.GeodesicSolver(Vs, Fs, optimize_layout="auto").optimize_layout is True
+    a = gsp.geodesic_distance(V, F, 3)
+    b = gsp.GeodesicSolver(V, F).distance(3)
+    np.testing.assert_allclose(a, b, rtol=1e-5, atol=1e-6)
+    np.testing.assert_allclose(gsp.geodesic_distance(Vs, Fs, int(rank[3])), a[perm], rtol=1e-5, atol=1e-6)
+    with pytest.raises(ValueError):
+        gsp.GeodesicSolver(V, F, optimize_layout="sometimes")
+    with pytest.raises(TypeError):
+        gsp.GeodesicSolver(V, F, optimize_layout=1)
+
+
 def test_unreachable_is_inf():
     V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [5, 0, 0], [6, 0, 0], [5, 1, 0]], float)
     F = np.array([[0, 1, 2], [3, 4, 5]])

@@ -11,17 +11,13 @@ namespace gsp::geodesic_app {
 
 struct LayoutChoice {
   bool optimize = true;
-  double file_gap = 0;     // mean log2(1 + |i - j|) over the file's edges, sampled (auto only)
-  double random_gap = 0;   // the same expected for a random order: log2(V) - 2
+  double file_gap = 0;     // gsp::OrderCoherence's figures (auto, one field only)
+  double random_gap = 0;
   std::string reason;      // for --stats
 };
 
-// `mode`: "auto", "on" or "off". auto: on, except for one field on a file whose mean log2
-// neighbour index gap is at least kCoherentGap below a random order's.
+// `mode`: "auto", "on" or "off". auto: on, except for one field on a file whose own order is
+// coherent (gsp::order_coherence).
 LayoutChoice choose_layout(const std::string& mode, const TriangleMesh& mesh, bool one_field);
-
-// log2 steps: neighbours 8x closer in the index than in a random order. The files measured
-// (docs/scale.md) sit 3.1-7.0 below in their own order and about 0 shuffled.
-inline constexpr double kCoherentGap = 3.0;
 
 }  // namespace gsp::geodesic_app

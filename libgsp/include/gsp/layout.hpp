@@ -40,4 +40,21 @@ double mean_neighbour_index_distance(const TriangleMesh& mesh);
 // about (2/3) log2(n) to about 3 (see docs/layout.md).
 double mean_log_neighbour_index_distance(const TriangleMesh& mesh);
 
+// Whether a mesh's own vertex order is coherent enough that one query gains nothing from the
+// layout (docs/scale.md: a whole one-field run 15-40% faster without it on such files, 10-35%
+// slower on a shuffled one; over many queries the layout always pays). `file_log_gap` is
+// mean_log_neighbour_index_distance estimated from 64 runs of consecutive faces (about 200,000
+// faces, read in order: a few ms), `random_log_gap` the same expected of a random order,
+// log2(V) - 2; coherent when the file is at least kCoherentLogGap below it.
+struct OrderCoherence {
+  double file_log_gap = 0;
+  double random_log_gap = 0;
+  bool coherent = false;
+};
+OrderCoherence order_coherence(const TriangleMesh& mesh);
+
+// log2 steps: neighbours 8x closer in the index than in a random order. The files measured sit
+// 3.1-9.9 below in their own order (57 of 92 corpus meshes) and about 0 shuffled.
+inline constexpr double kCoherentLogGap = 3.0;
+
 }  // namespace gsp
