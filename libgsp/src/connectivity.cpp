@@ -2,6 +2,7 @@
 #include <gsp/errors.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 namespace gsp {
@@ -45,31 +46,31 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
     if (a != b) ++bucket_begin[std::min(a, b) + 1];
   }
   for (std::size_t v = 0; v < nv; ++v) bucket_begin[v + 1] += bucket_begin[v];
-  std::vector<Index> bucket(bucket_begin[nv]);
+  // Each entry is (other end << 32 | halfedge): sorting the plain integers orders a bucket by
+  // the other end, then by halfedge index (a stable ring order that keeps results independent
+  // of hashing), without looking the ends up again in the comparisons.
+  std::vector<std::uint64_t> bucket(bucket_begin[nv]);
   {
     std::vector<Index> fill(bucket_begin.begin(), bucket_begin.end() - 1);
     for (Index h = 0; h < nh; ++h) {
       const Index a = from_vertex(mesh, h), b = to_vertex(mesh, h);
       if (a == b) { c.radial_next[h] = h; continue; }
-      bucket[fill[std::min(a, b)]++] = h;
+      bucket[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 32) | h;
     }
   }
-  auto other_end = [&](Index h) { return std::max(from_vertex(mesh, h), to_vertex(mesh, h)); };
+  c.edge_halfedge.reserve(nh / 2 + 1);
+  auto halfedge = [](std::uint64_t e) { return Index(e & 0xffffffffu); };
   for (std::size_t v = 0; v < nv; ++v) {
     auto first = bucket.begin() + bucket_begin[v], last = bucket.begin() + bucket_begin[v + 1];
-    // Stable order inside a ring (by halfedge index) keeps results independent of hashing.
-    std::sort(first, last, [&](Index x, Index y) {
-      const Index ox = other_end(x), oy = other_end(y);
-      return ox != oy ? ox < oy : x < y;
-    });
+    std::sort(first, last);
     for (auto it = first; it != last;) {
       auto end = it + 1;
-      while (end != last && other_end(*end) == other_end(*it)) ++end;
+      while (end != last && (*end >> 32) == (*it >> 32)) ++end;
       const Index edge = static_cast<Index>(c.edge_halfedge.size());
-      c.edge_halfedge.push_back(*it);
+      c.edge_halfedge.push_back(halfedge(*it));
       for (auto k = it; k != end; ++k) {
-        c.radial_next[*k] = (k + 1 != end) ? *(k + 1) : *it;
-        c.halfedge_edge[*k] = edge;
+        c.radial_next[halfedge(*k)] = (k + 1 != end) ? halfedge(*(k + 1)) : halfedge(*it);
+        c.halfedge_edge[halfedge(*k)] = edge;
       }
       it = end;
     }
