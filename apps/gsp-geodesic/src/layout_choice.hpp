@@ -3,6 +3,7 @@
 // The clustering pays back over many queries, but a run that computes one field on a file
 // whose own order is already coherent (scans, remeshes, subdivisions: most files) is 15-40%
 // faster end to end without it, and one on a shuffled file 10-35% slower (docs/scale.md).
+#include <gsp/layout.hpp>
 #include <gsp/mesh.hpp>
 
 #include <string>
@@ -11,8 +12,7 @@ namespace gsp::geodesic_app {
 
 struct LayoutChoice {
   bool optimize = true;
-  double file_gap = 0;     // gsp::OrderCoherence's figures (auto, one field only)
-  double random_gap = 0;
+  OrderCoherence order;    // measured for auto and one field only (else zeros)
   std::string reason;      // for --stats
 };
 

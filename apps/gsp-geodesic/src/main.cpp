@@ -148,9 +148,9 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["step"] = o.f;
     ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";
     ctx.settings()["layout_reason"] = layout.reason;
-    if (layout.random_gap > 0) {
-      ctx.operations()["file_order_log_gap"] = layout.file_gap;
-      ctx.operations()["random_order_log_gap"] = layout.random_gap;
+    if (layout.order.random_log_gap > 0) {
+      ctx.operations()["file_order_log_gap"] = layout.order.file_log_gap;
+      ctx.operations()["random_order_log_gap"] = layout.order.random_log_gap;
     }
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();

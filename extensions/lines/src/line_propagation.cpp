@@ -305,16 +305,22 @@ class Propagation {
     const Vec2 Q = P + lambda * (C - P);
     const Vec2 N = detail::nearest_on_segment(Q, a, b);
     const double eps = 1e-9 * scale_;
+    // Where the line from R to the wave's nearest point NR (on u's side) crosses the edge's
+    // line: 0 within AB (or no crossing), 1 before A, 2 beyond B; `beyond` gets how far past
+    // that end. The probe Q, the corner rules' probes and the opposite corner P all use it.
+    auto crossing_through = [&](Vec2 R, Vec2 NR, double* beyond = nullptr) {
+      const double d = R.y - NR.y;
+      if (!(d > 0)) return 0;
+      const double x = R.x + (NR.x - R.x) * (R.y / d);
+      const int side = x < -eps ? 1 : (x > e1 + eps ? 2 : 0);
+      if (beyond) *beyond = side == 1 ? -x : x - e1;
+      return side;
+    };
     int kind = 0;   // 0: straight on, 1: bend at A, 2: bend at B
     double miss = 0;  // how far beyond the bend's end the probe's line crosses the edge's line
     const bool same_side = N.y > eps;
     if (!same_side) {
-      const double denom = Q.y - N.y;
-      if (denom > 0) {
-        const double xc = Q.x + (N.x - Q.x) * (Q.y / denom);
-        kind = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
-        miss = kind == 1 ? -xc : xc - e1;
-      }
+      kind = crossing_through(Q, N, &miss);
     } else {
       // The nearest point lies on t's side: the segment was carried round a vertex. Bend at
       // the end of the edge that gives the shorter path to Q — even at a flat vertex, as the
@@ -325,7 +331,7 @@ class Propagation {
       kind = via_a <= via_b ? 1 : 2;
     }
     // The corner rules, as in the core: a bend at a flat, convex or saddle end reconsidered,
-    // a straight crossing checked at saddle ends. `crossing(lambda)` is the test above from
+    // a straight crossing checked at saddle ends. `crossing(lambda)` is the same test from
     // the probe at lambda (0: P, 1: the centroid); a wave already reaching t's side is seen.
     const Triangle& tt = mesh_.triangles[t];
     const std::uint8_t kind_a = kinds_[tt[k]], kind_b = kinds_[tt[(k + 1) % 3]];
@@ -333,10 +339,7 @@ class Propagation {
       auto crossing = [&](double at) {
         const Vec2 R = P + at * (C - P);
         const Vec2 NR = detail::nearest_on_segment(R, a, b);
-        const double d = R.y - NR.y;
-        if (NR.y > eps || !(d > 0)) return 0;
-        const double xr = R.x + (NR.x - R.x) * (R.y / d);
-        return xr < -eps ? 1 : (xr > e1 + eps ? 2 : 0);
+        return NR.y > eps ? 0 : crossing_through(R, NR);
       };
       if (kind != 0)
         kind = intrinsic::reconsider_bend(kind, kind == 1 ? kind_a : kind_b,
@@ -361,9 +364,8 @@ class Propagation {
         const double via_a = segment_distance(A, a, b) + intrinsic::length(P - A);
         const double via_b = segment_distance(B, a, b) + intrinsic::length(P - B);
         side = via_a <= via_b ? 1 : 2;
-      } else if (P.y - NP.y > 0) {
-        const double xc = P.x + (NP.x - P.x) * (P.y / (P.y - NP.y));
-        side = xc < -eps ? 1 : (xc > e1 + eps ? 2 : 0);
+      } else {
+        side = crossing_through(P, NP);
       }
       if (side == 1 && kind_a == intrinsic::kFlatVertex) side = 0;
       if (side == 2 && kind_b == intrinsic::kFlatVertex) side = 0;
