@@ -119,6 +119,35 @@ TEST(GeodesicInvariants, LayoutDoesNotChangeTheResult) {
   }
 }
 
+TEST(GeodesicInvariants, SharedMeshGivesTheSameFieldsAndIsNotCopiedWithoutLayout) {
+  const auto shared = std::make_shared<const TriangleMesh>(curved_mesh());
+  SolverOptions plain;
+  plain.optimize_layout = false;
+  for (bool layout : {false, true}) {
+    SolverOptions so = plain;
+    so.optimize_layout = layout;
+    const GeodesicSolver copied(*shared, so);
+    const GeodesicSolver sharing(shared, so);
+    // Without a layout the solver keeps the caller's mesh (one more owner); with one, its own
+    // reordered copy.
+    EXPECT_EQ(shared.use_count(), layout ? 1 : 2);
+    for (Source s : {Source::at_vertex(42), Source::in_face(17, {0.2, 0.3, 0.5})}) {
+      EXPECT_EQ(copied.compute({s}).vertex_distance, sharing.compute({s}).vertex_distance);
+      // Two queries: the first builds its starting state, the second copies the kept records.
+      EXPECT_EQ(sharing.compute({s}).vertex_distance, copied.compute({s}).vertex_distance);
+    }
+    std::vector<bool> seen(shared->num_faces(), false);
+    for (Index f = 0; f < shared->num_faces(); ++f) {
+      const Index r = sharing.face_memory_rank(f);
+      ASSERT_LT(r, shared->num_faces());
+      EXPECT_FALSE(seen[r]) << "face_memory_rank is not a permutation";
+      seen[r] = true;
+      if (!layout) EXPECT_EQ(r, f);
+    }
+  }
+  EXPECT_THROW(GeodesicSolver(std::shared_ptr<const TriangleMesh>()), InvalidInput);
+}
+
 TEST(GeodesicInvariants, StrategiesAgree) {
   const TriangleMesh m = curved_mesh();
   const GeodesicSolver solver(m);

@@ -25,19 +25,19 @@ namespace gsp {
 void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vector<double>& edge_lengths) {
   const std::size_t nh = conn.num_halfedges();
   if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
-  skipped_face.assign(mesh.num_faces(), false);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    const Triangle& t = mesh.triangles[f];
+  skipped_face.assign(mesh().num_faces(), false);
+  for (std::size_t f = 0; f < mesh().num_faces(); ++f) {
+    const Triangle& t = mesh().triangles[f];
     skipped_face[f] = repeats_vertex(t);
   }
-  input.triangles = mesh.triangles;
+  input.mesh_triangles = &mesh().triangles;
   if (edge_lengths.empty()) {
-    input.length = detail::halfedge_lengths(mesh);
+    input.length = detail::halfedge_lengths(mesh());
   } else {
     // Given in input face order; the layout moves whole faces (corners keep their order).
     input.length.resize(edge_lengths.size());
-    for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-      for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(layout.face_order[f]) + i];
+    for (std::size_t f = 0; f < mesh().num_faces(); ++f)
+      for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(maps.face_to_input(Index(f))) + i];
   }
   detail::snap_zero_lengths(input.length);
   // Every halfedge starts as a ring of its own (boundary, skipped face, loop, zero-length
@@ -58,17 +58,15 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
     for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
   }
   input.needs_double = detail::needs_double_lengths(input.length, skipped_face);
-  input.set_direction_bits(plain);
-  input.corner_begin = conn.vertex_corner_begin;
-  input.corners = conn.vertex_corners;
+  input.set_direction_bits(std::move(plain));
 }
 
 void GeodesicSolver::Impl::build_delaunay() {
   detail::IntrinsicTriangulation t;
-  t.triangles = input.triangles;
+  t.triangles = input.triangles();
   t.length = input.length;
   t.skipped = skipped_face;
-  t.positions = &mesh.positions;   // picks each patch's winding (intrinsic_delaunay.hpp)
+  t.positions = &mesh().positions;   // picks each patch's winding (intrinsic_delaunay.hpp)
   t.ring.resize(input.ring.size());
   for (std::size_t h = 0; h < t.ring.size(); ++h) t.ring[h] = input.ring[h] & detail::kRingIndexMask;
   // A generous cap: Delaunay flipping ends after finitely many flips, but float-stored slivers
@@ -76,18 +74,18 @@ void GeodesicSolver::Impl::build_delaunay() {
   flips = detail::make_intrinsic_delaunay(t, 20 * t.length.size());
   if (flips == 0 && t.reoriented == 0) return;   // a soup needing no flips still gets one winding
   delaunay = std::make_unique<Triangulation>();
-  delaunay->triangles = std::move(t.triangles);
+  delaunay->own_triangles = std::move(t.triangles);
   delaunay->length = std::move(t.length);
   detail::snap_zero_lengths(delaunay->length);
   delaunay->needs_double = detail::needs_double_lengths(delaunay->length, skipped_face);
-  delaunay->set_direction_bits(t.ring);
-  delaunay->build_corners(mesh.num_vertices());
+  delaunay->set_direction_bits(std::move(t.ring));
+  delaunay->build_corners(mesh().num_vertices());
 }
 
 void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
   // Union the ends of every zero-length edge of a face that takes part.
   std::vector<Index> parent;   // over the vertices met, by a map to local ids
-  std::vector<Index> local(mesh.num_vertices(), kInvalidIndex), vertex;
+  std::vector<Index> local(mesh().num_vertices(), kInvalidIndex), vertex;
   auto id = [&](Index v) {
     if (local[v] == kInvalidIndex) local[v] = Index(vertex.size()), vertex.push_back(v), parent.push_back(local[v]);
     return local[v];
@@ -99,7 +97,7 @@ void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
   for (Index e = 0; e < conn.num_edges(); ++e) {
     const Index h = conn.edge_halfedge[e];
     if (skipped_face[face_of(h)] || !detail::zero_length_edge(input.length, h)) continue;
-    const Index a = id(from_vertex(mesh, h)), b = id(to_vertex(mesh, h));
+    const Index a = id(from_vertex(mesh(), h)), b = id(to_vertex(mesh(), h));
     const Index ra = find(a), rb = find(b);
     if (ra != rb) parent[ra] = rb;
   }
@@ -115,36 +113,59 @@ void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
 
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
+  impl_->build(input, nullptr, options);
+}
+
+GeodesicSolver::GeodesicSolver(std::shared_ptr<const TriangleMesh> input, const SolverOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  if (!input) throw InvalidInput("GeodesicSolver: no mesh (null pointer)");
+  const TriangleMesh& mesh = *input;
+  impl_->build(mesh, std::move(input), options);
+}
+
+void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared,
+                                 const SolverOptions& options) {
   using Clock = std::chrono::steady_clock;
   validate(input);
   if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(input, options.edge_lengths);
   auto t0 = Clock::now();
-  Impl& m = *impl_;
+  Impl& m = *this;
   m.custom_lengths = !options.edge_lengths.empty();
   m.heuristic = options.heuristic;
-  m.layout = options.optimize_layout ? compute_cache_layout(input) : identity_layout(input);
-  m.mesh = apply_layout(input, m.layout);
+  if (options.optimize_layout) {
+    Layout layout = compute_cache_layout(input);
+    m.mesh_store = std::make_shared<const TriangleMesh>(apply_layout(input, layout));
+    m.maps = detail::IndexMaps(std::move(layout));
+  } else {
+    m.mesh_store = shared ? std::move(shared) : std::make_shared<const TriangleMesh>(input);
+  }
   auto t1 = Clock::now();
-  const Connectivity conn = build_connectivity(m.mesh);
+  Connectivity conn = build_connectivity(m.mesh());
   m.build_input(conn, options.edge_lengths);
   m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
-  m.bridge_vertices = intrinsic::bridge_vertices(m.mesh, conn, m.skipped_face);
+  m.bridge_vertices = intrinsic::bridge_vertices(m.mesh(), conn, m.skipped_face);
   m.find_coincident_vertices(conn);
   // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
   std::vector<Index> nonmanifold = m.bridge_vertices;
   nonmanifold.insert(nonmanifold.end(), m.coincident.begin(), m.coincident.end());
   for (Index e = 0; e < conn.num_edges(); ++e)
     if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
-      nonmanifold.push_back(from_vertex(m.mesh, conn.edge_halfedge[e]));
-      nonmanifold.push_back(to_vertex(m.mesh, conn.edge_halfedge[e]));
+      nonmanifold.push_back(from_vertex(m.mesh(), conn.edge_halfedge[e]));
+      nonmanifold.push_back(to_vertex(m.mesh(), conn.edge_halfedge[e]));
     }
-  std::vector<std::uint8_t> boundary_halfedge(m.input.ring.size());
-  for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
-    boundary_halfedge[h] = (m.input.ring[h] & detail::kRingIndexMask) == h;
-  m.vertex_kind = intrinsic::vertex_kinds(m.mesh, boundary_halfedge, m.skipped_face, nonmanifold,
-                                          m.custom_lengths ? &m.input.length : nullptr);
+  // The connectivity's vertex corners are the input triangulation's; the rest goes before the
+  // flips, which hold a second triangulation (the peak of the run's memory).
+  m.input.corner_begin = std::move(conn.vertex_corner_begin);
+  m.input.corners = std::move(conn.vertex_corners);
+  conn = Connectivity();
+  {
+    std::vector<std::uint8_t> boundary_halfedge(m.input.ring.size());
+    for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
+      boundary_halfedge[h] = (m.input.ring[h] & detail::kRingIndexMask) == h;
+    m.vertex_kind = intrinsic::vertex_kinds(m.mesh(), boundary_halfedge, m.skipped_face, nonmanifold,
+                                            m.custom_lengths ? &m.input.length : nullptr);
+  }
   if (options.intrinsic_delaunay) m.build_delaunay();
-  (m.delaunay ? *m.delaunay : m.input).records<float>(1.0 / m.mean_edge, m.vertex_kind);
   auto t2 = Clock::now();
   m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
   m.timings.build = std::chrono::duration<double>(t2 - t1).count();
@@ -154,9 +175,9 @@ GeodesicSolver::~GeodesicSolver() = default;
 GeodesicSolver::GeodesicSolver(GeodesicSolver&&) noexcept = default;
 GeodesicSolver& GeodesicSolver::operator=(GeodesicSolver&&) noexcept = default;
 
-std::size_t GeodesicSolver::num_vertices() const { return impl_->mesh.num_vertices(); }
-std::size_t GeodesicSolver::num_faces() const { return impl_->mesh.num_faces(); }
-const std::vector<Index>& GeodesicSolver::face_memory_rank() const { return impl_->layout.face_rank; }
+std::size_t GeodesicSolver::num_vertices() const { return impl_->mesh().num_vertices(); }
+std::size_t GeodesicSolver::num_faces() const { return impl_->mesh().num_faces(); }
+Index GeodesicSolver::face_memory_rank(Index face) const { return impl_->maps.face_to_layout(face); }
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 
@@ -170,7 +191,7 @@ Precision GeodesicSolver::resolved_precision(Precision requested, bool input_fac
 
 std::size_t GeodesicSolver::state_bytes(Precision precision) const {
   // Per face one record (source, distances, edge lengths); per halfedge one radial link.
-  const std::size_t nf = impl_->mesh.num_faces();
+  const std::size_t nf = impl_->mesh().num_faces();
   const std::size_t record =
       resolved_precision(precision) == Precision::single ? sizeof(FaceRecord<float>) : sizeof(FaceRecord<double>);
   return nf * record + impl_->input.ring.size() * sizeof(Index);
@@ -178,7 +199,7 @@ std::size_t GeodesicSolver::state_bytes(Precision precision) const {
 
 GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
                                        const GeodesicOptions& options) const {
-  detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh.num_vertices());
+  detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh().num_vertices());
   // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
   // per-face virtual sources need the input faces.
   bool vertex_sources_only = true;
@@ -192,9 +213,9 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
 template <class Real>
 GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::vector<Source>& sources,
                                          const GeodesicOptions& options) const {
-  const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
+  const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const double scale = 1.0 / mean_edge;
-  std::vector<FaceRecord<Real>> state = take_state(tri.records<Real>(scale, vertex_kind));   // this query's copy
+  std::vector<FaceRecord<Real>> state = take_state<Real>(tri);   // this query's copy
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
@@ -204,8 +225,8 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::optional<detail::TargetSet<Real>> goal;   // only for runs with targets
   if (!options.targets.empty()) {
     std::vector<Index> targets(options.targets.size());
-    for (std::size_t i = 0; i < targets.size(); ++i) targets[i] = layout.vertex_rank[options.targets[i]];
-    goal.emplace(state.data(), tri.triangles, mesh.positions, tri.corner_begin, tri.corners, targets, scale,
+    for (std::size_t i = 0; i < targets.size(); ++i) targets[i] = maps.vertex_to_layout(options.targets[i]);
+    goal.emplace(state.data(), tri.triangles(), mesh().positions, tri.corner_begin, tri.corners, targets, scale,
                  options.goal_directed);
   }
 
@@ -233,7 +254,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
       const bool reached = state[fi].reached();
       faces_reached += reached;
       const Index label = reached ? state[fi].source() : kInvalidIndex;
-      const Triangle& t = tri.triangles[fi];
+      const Triangle& t = tri.triangles()[fi];
       for (Index i = 0; i < 3; ++i) {
         const Real d = corner[3 * (fi - begin) + i];
         const bool better = d < vmin[t[i]];
@@ -255,8 +276,8 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   // order (positions and values read in sequence).
   if (options.straight_line_bound && !custom_lengths)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        nv, nullptr, mesh.positions, vmin.data(), vlabel.data(), mean_edge, true,
-        detail::source_points(mesh, layout, sources));
+        nv, nullptr, mesh().positions, vmin.data(), vlabel.data(), mean_edge, true,
+        detail::source_points(mesh(), maps, sources));
   result.stats.faces_reached = faces_reached;
   // A vertex source's own value is exact and wins ties against the faces; of several sources
   // at one vertex the smallest value, the first source on ties.
@@ -274,7 +295,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   result.vertex_distance.resize(nv);
   result.vertex_source.resize(nv);
   for (std::size_t in = 0; in < nv; ++in) {
-    const Index v = layout.vertex_rank[in];
+    const Index v = maps.vertex_to_layout(Index(in));
     const double d = double(vmin[v]) * mean_edge;
     const bool keep = d <= cutoff;
     result.vertex_distance[in] = keep ? d : inf_d;
@@ -284,7 +305,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     // Exact (model units) unless a face or an edge found the vertex closer; after relaxation
     // vmin holds the seed itself rounded to the propagation's precision.
     if (!(vs.value <= double(vmin[vs.vertex]) * mean_edge * (relax ? 1 + 1e-6 : 1.0))) continue;
-    const Index in = layout.vertex_order[vs.vertex];
+    const Index in = maps.vertex_to_input(vs.vertex);
     const bool keep = vs.value <= cutoff;
     result.vertex_distance[in] = keep ? vs.value : inf_d;
     result.vertex_source[in] = keep ? vs.label : kInvalidIndex;
@@ -302,7 +323,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     result.face_distance.resize(nf);
     result.face_source.resize(nf);
     for (std::size_t in = 0; in < nf; ++in) {
-      const Index fi = layout.face_rank[in];
+      const Index fi = maps.face_to_layout(Index(in));
       double d = std::numeric_limits<double>::infinity();
       Index label = kInvalidIndex;
       if (&tri == &input) {
@@ -311,7 +332,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
       } else {
         // The propagation ran on other faces: an input face gets the mean of its corners'
         // distances and the label of its nearest corner.
-        const Triangle& t = mesh.triangles[fi];
+        const Triangle& t = mesh().triangles[fi];
         int best = 0;
         for (int i = 1; i < 3; ++i)
           if (vdist[t[i]] < vdist[t[best]]) best = i;
@@ -327,8 +348,8 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     for (std::size_t fi = 0; fi < nf; ++fi) {
       const FaceRecord<Real>& st = state[fi];
       if (!st.reached()) continue;
-      VirtualSource& vs = result.face_sources[layout.face_order[fi]];
-      vs.position = detail::canonical_to_3d(mesh, Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
+      VirtualSource& vs = result.face_sources[maps.face_to_input(Index(fi))];
+      vs.position = detail::canonical_to_3d(mesh(), Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
       vs.sigma = double(st.sigma) * mean_edge;
       vs.source = st.source();
     }

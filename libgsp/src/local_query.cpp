@@ -39,9 +39,9 @@ LocalWorkspace GeodesicSolver::make_workspace() const {
   LocalWorkspace w;
   LocalWorkspace::State& s = *w.state_;
   s.owner = impl_.get();
-  s.vdist.assign(impl_->mesh.num_vertices(), std::numeric_limits<double>::infinity());
-  s.vlabel.assign(impl_->mesh.num_vertices(), kInvalidIndex);
-  s.face_mark.assign(impl_->mesh.num_faces(), 0);
+  s.vdist.assign(impl_->mesh().num_vertices(), std::numeric_limits<double>::infinity());
+  s.vlabel.assign(impl_->mesh().num_vertices(), kInvalidIndex);
+  s.face_mark.assign(impl_->mesh().num_faces(), 0);
   return w;
 }
 
@@ -49,7 +49,7 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
                                          LocalWorkspace& workspace) const {
   if (!workspace.state_ || workspace.state_->owner != impl_.get())
     throw InvalidInput("compute_local: the workspace was made by another solver (use make_workspace())");
-  detail::validate_options(options, detail::QueryKind::local, impl_->custom_lengths, impl_->mesh.num_vertices());
+  detail::validate_options(options, detail::QueryKind::local, impl_->custom_lengths, impl_->mesh().num_vertices());
   if (resolved_precision(options.precision, /*input_faces=*/true) == Precision::single)
     return impl_->run_local<float>(sources, options, workspace);
   return impl_->run_local<double>(sources, options, workspace);
@@ -64,7 +64,7 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
   for (int round = 0;; ++round) {
     std::size_t relaxed = 0;
     const std::vector<Index> lowered = detail::relax_along_edges<double>(
-        input.triangles, input.length, 1.0, skipped_face, input.corner_begin, input.corners, &from,
+        input.triangles(), input.length, 1.0, skipped_face, input.corner_begin, input.corners, &from,
         options.max_distance, kPseudoSourceGain, values.vdist, values.vlabel, relaxed, &values.vertices);
     stats.relaxed_vertices += relaxed;
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
@@ -78,7 +78,7 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
     for (Index f : changed_faces) {
       if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
       for (Index i = 0; i < 3; ++i) {
-        const Index v = input.triangles[f][i];
+        const Index v = input.triangles()[f][i];
         const double d = double(corner_distance(state[f], i)) * mean_edge;
         if (!(d < values.vdist[v])) continue;
         if (values.vdist[v] == std::numeric_limits<double>::infinity()) values.vertices.push_back(v);
@@ -98,8 +98,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   }();
   const Triangulation& tri = input;
   const double scale = 1.0 / mean_edge;
-  const std::vector<FaceRecord<Real>>& pristine = tri.records<Real>(scale, vertex_kind);
-  if (buf.state.empty()) buf.state = pristine;   // first query of this precision: one full copy
+  if (buf.state.empty()) buf.state = tri.initial_records<Real>(scale, vertex_kind);   // first query of this precision
 
   LocalField result;
   result.stats.mean_edge_length = mean_edge;
@@ -143,7 +142,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
   for (Index f : ws.faces) {
     const FaceRecord<Real>& st = buf.state[f];
-    const Triangle& t = tri.triangles[f];
+    const Triangle& t = tri.triangles()[f];
     for (Index i = 0; i < 3; ++i) touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
   }
   if (options.vertex_relaxation)
@@ -152,8 +151,8 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   result.stats.faces_reached = ws.faces.size();
   if (options.straight_line_bound && !custom_lengths) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        ws.vertices.size(), ws.vertices.data(), mesh.positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
-        detail::source_points(mesh, layout, sources));
+        ws.vertices.size(), ws.vertices.data(), mesh().positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
+        detail::source_points(mesh(), maps, sources));
     // A vertex source's own value is exact and wins, as in compute().
     for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
   }
@@ -161,7 +160,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   const double cutoff = options.max_distance;
   for (Index v : ws.vertices) {
     if (!(ws.vdist[v] <= cutoff)) continue;
-    result.vertices.push_back(layout.vertex_order[v]);
+    result.vertices.push_back(maps.vertex_to_input(v));
     result.vertex_distance.push_back(ws.vdist[v]);
     result.vertex_source.push_back(ws.vlabel[v]);
   }
@@ -175,12 +174,12 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
     // Faces that cannot hold a point within max_distance (reached by the last ring of the
     // front) are left out of the result.
     if (!(double(st.dT) - double(detail::centroid_radius(st.len)) <= scaled_cutoff)) continue;
-    result.faces.push_back(layout.face_order[f]);
+    result.faces.push_back(maps.face_to_input(f));
     result.face_distance.push_back(double(st.dT) * mean_edge);
     result.face_source.push_back(st.source());
     if (options.want_face_sources) {
       VirtualSource vs;
-      vs.position = detail::canonical_to_3d(mesh, f, double(st.sx) * mean_edge, double(st.sy) * mean_edge);
+      vs.position = detail::canonical_to_3d(mesh(), f, double(st.sx) * mean_edge, double(st.sy) * mean_edge);
       vs.sigma = double(st.sigma) * mean_edge;
       vs.source = st.source();
       result.face_sources.push_back(vs);

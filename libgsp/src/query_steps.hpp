@@ -29,7 +29,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
                                 std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
                                 detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const {
   const std::vector<double>& length = tri.length;
-  const std::size_t nf = mesh.num_faces(), nv = mesh.num_vertices();
+  const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const double scale = 1.0 / mean_edge;
   if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^26 - 1)");
   struct FacePoint {
@@ -48,7 +48,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
       if (src.element >= nv)
         throw InvalidInput("source vertex " + std::to_string(src.element) + " does not exist (" +
                            std::to_string(nv) + " vertices)");
-      const Index v = layout.vertex_rank[src.element];
+      const Index v = maps.vertex_to_layout(src.element);
       // Repeated vertices are resolved where the seeds are applied (the smallest offset, the
       // first source on ties).
       vertex_seeds.push_back({v, src.offset, label});
@@ -71,7 +71,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
       if (!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || std::abs(sum - 1) > 1e-6)
         throw InvalidInput("source " + std::to_string(s) +
                            ": barycentric coordinates must be >= 0 and sum to 1");
-      const Index f = layout.face_rank[src.element];
+      const Index f = maps.face_to_layout(src.element);
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
       const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
       if (seed_face(length, f, w, scale, src.offset * scale, label, state)) {
@@ -92,7 +92,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     const double px = fp.w[0] * p[0][0] + fp.w[1] * p[1][0] + fp.w[2] * p[2][0];
     const double py = fp.w[0] * p[0][1] + fp.w[1] * p[1][1] + fp.w[2] * p[2][1];
     for (Index i = 0; i < 3; ++i) {
-      const Index v = tri.triangles[fp.face][i];
+      const Index v = tri.triangles()[fp.face][i];
       const double offset = fp.offset + std::hypot(p[i][0] - px, p[i][1] - py);   // model units
       vertex_seeds.push_back({v, offset, fp.label});
       if (goal) goal->vertex_value(v, Real(offset * scale));
@@ -121,14 +121,14 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
   step.collect_reached(reached, every_update);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
-  const unsigned threads = goal || reached ? 1 : propagation_threads(options, mesh.num_faces(), queue.size());
+  const unsigned threads = goal || reached ? 1 : propagation_threads(options, mesh().num_faces(), queue.size());
   const bool parallel = threads > 1 && !goal && !reached &&
                         (options.strategy == Strategy::speed_limiter || options.strategy == Strategy::hybrid_postpone);
   auto propagate = [&] {
     using detail::Postpone;
     if (goal) return detail::run_targeted(step, queue, *goal, stats);
     if (parallel) {
-      detail::run_parallel_speed_limiter(state, mesh.num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
+      detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
                                          limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
                                          stats);
       return;
@@ -244,7 +244,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
   for (int round = 0;; ++round) {
     std::size_t relaxed = 0;
     const std::vector<Index> lowered = detail::relax_along_edges<Real>(
-        input.triangles, input.length, scale, skipped_face, input.corner_begin, input.corners, from, limit,
+        input.triangles(), input.length, scale, skipped_face, input.corner_begin, input.corners, from, limit,
         Real(kPseudoSourceGain), vmin, vlabel, relaxed);
     stats.relaxed_vertices += relaxed;
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
@@ -257,7 +257,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
     changed_vertices.clear();
     for (Index f : changed_faces)
       for (Index i = 0; i < 3; ++i) {
-        const Index v = tri.triangles[f][i];
+        const Index v = tri.triangles()[f][i];
         const Real d = corner_distance(state[f], i);
         if (d < vmin[v]) vmin[v] = d, vlabel[v] = state[f].source(), changed_vertices.push_back(v);
       }

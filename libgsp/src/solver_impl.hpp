@@ -3,12 +3,14 @@
 // to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
 // bounded ones, query_steps.hpp holds the seeding and propagation both use.
 #include "goal_directed.hpp"
+#include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
 #include "propagation.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -31,53 +33,73 @@ struct VertexSeed {
 // One triangulation the propagation can run on: the input's faces, or their intrinsic
 // Delaunay flip (same vertices, same surface, better-shaped triangles).
 struct Triangulation {
-  std::vector<Triangle> triangles;
+  // The corners of each face: the flip's own; the input's are the mesh's (not copied).
+  std::vector<Triangle> own_triangles;
+  const std::vector<Triangle>* mesh_triangles = nullptr;
+  const std::vector<Triangle>& triangles() const { return mesh_triangles ? *mesh_triangles : own_triangles; }
   std::vector<double> length;             // per halfedge, model units
   std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
   bool needs_double = false;              // a face too thin for float lengths (Precision::automatic)
 
+  mutable std::atomic<bool> float_started{false}, double_started{false};   // a full query began
   mutable std::once_flag float_once, double_once;
   mutable std::vector<FaceRecord<float>> records_float;
   mutable std::vector<FaceRecord<double>> records_double;
 
   // The per-face records every query starts from (lengths, flat and saddle corners, nothing
-  // reached),
-  // built on first use per precision.
+  // reached).
   template <class Real>
-  const std::vector<FaceRecord<Real>>& records(double scale, const std::vector<std::uint8_t>& kind) const {
-    auto build = [&] {
-      const Real inf = std::numeric_limits<Real>::infinity();
-      std::vector<FaceRecord<Real>> r(triangles.size());
-      for (std::size_t f = 0; f < triangles.size(); ++f) {
-        Index tag = detail::kNoSource;
-        for (Index i = 0; i < 3; ++i) {
-          const std::uint8_t k = kind[triangles[f][i]];
-          if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
-          if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
-        }
-        r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
-                                 Real(scale * length[3 * f + 2])}, tag};
+  std::vector<FaceRecord<Real>> initial_records(double scale, const std::vector<std::uint8_t>& kind) const {
+    const Real inf = std::numeric_limits<Real>::infinity();
+    std::vector<FaceRecord<Real>> r(triangles().size());
+    for (std::size_t f = 0; f < r.size(); ++f) {
+      const Triangle& t = triangles()[f];
+      Index tag = detail::kNoSource;
+      for (Index i = 0; i < 3; ++i) {
+        const std::uint8_t k = kind[t[i]];
+        if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
+        if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
       }
-      return r;
-    };
-    if constexpr (std::is_same_v<Real, float>) {
-      std::call_once(float_once, [&] { records_float = build(); });
-      return records_float;
-    } else {
-      std::call_once(double_once, [&] { records_double = build(); });
-      return records_double;
+      r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
+                               Real(scale * length[3 * f + 2])}, tag};
     }
+    return r;
   }
 
-  void set_direction_bits(const std::vector<Index>& plain_ring) {
+  // A query's starting state. The first full query of a precision builds it directly; from
+  // the second on, a kept copy of the records is copied (a copy is cheaper than a build, and
+  // a one-shot run never holds the records twice: 32 bytes per face less at its peak).
+  template <class Real>
+  void fill_state(std::vector<FaceRecord<Real>>& state, double scale, const std::vector<std::uint8_t>& kind) const {
+    constexpr bool single = std::is_same_v<Real, float>;
+    std::atomic<bool>& started = single ? float_started : double_started;
+    if (!started.exchange(true)) {
+      state = initial_records<Real>(scale, kind);
+      return;
+    }
+    const auto& records = [&]() -> const std::vector<FaceRecord<Real>>& {
+      if constexpr (single) {
+        std::call_once(float_once, [&] { records_float = initial_records<float>(scale, kind); });
+        return records_float;
+      } else {
+        std::call_once(double_once, [&] { records_double = initial_records<double>(scale, kind); });
+        return records_double;
+      }
+    }();
+    state.assign(records.begin(), records.end());
+  }
+
+  // Takes the plain radial links (halfedge indices) and adds the direction bits in place.
+  void set_direction_bits(std::vector<Index>&& plain_ring) {
     auto dir = [&](Index h) {
-      return triangles[face_of(h)][corner_of(h)] < triangles[face_of(h)][corner_of(next_halfedge(h))];
+      return triangles()[face_of(h)][corner_of(h)] < triangles()[face_of(h)][corner_of(next_halfedge(h))];
     };
-    ring.resize(plain_ring.size());
-    for (Index h = 0; h < Index(plain_ring.size()); ++h) {
-      const Index g = plain_ring[h];
-      const bool pair = g != h && plain_ring[g] == h;
+    ring = std::move(plain_ring);
+    // Links before h already carry bits: masked, every entry reads as its plain index.
+    for (Index h = 0; h < Index(ring.size()); ++h) {
+      const Index g = ring[h] & detail::kRingIndexMask;
+      const bool pair = g != h && (ring[g] & detail::kRingIndexMask) == h;
       ring[h] = g == h ? h
                        : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0) |
                           (pair ? detail::kRingPair : 0));
@@ -86,18 +108,20 @@ struct Triangulation {
 
   void build_corners(std::size_t num_vertices) {
     corner_begin.assign(num_vertices + 1, 0);
-    for (const Triangle& t : triangles)
+    for (const Triangle& t : triangles())
       for (Index v : t) ++corner_begin[v + 1];
     for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
-    corners.resize(3 * triangles.size());
+    corners.resize(3 * triangles().size());
     std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
-    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles[face_of(c)][corner_of(c)]]++] = c;
+    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles()[face_of(c)][corner_of(c)]]++] = c;
   }
 };
 
 struct GeodesicSolver::Impl {
-  Layout layout;
-  TriangleMesh mesh;               // reordered by the layout
+  detail::IndexMaps maps;          // input <-> memory order
+  // In memory order: a laid-out copy, or the caller's mesh itself when it keeps its order.
+  std::shared_ptr<const TriangleMesh> mesh_store;
+  const TriangleMesh& mesh() const { return *mesh_store; }
   Triangulation input;             // the (reordered) input faces
   std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
   std::size_t flips = 0;
@@ -128,13 +152,13 @@ struct GeodesicSolver::Impl {
   };
   mutable SpareState spare;
   template <class Real>
-  std::vector<FaceRecord<Real>> take_state(const std::vector<FaceRecord<Real>>& initial) const {
+  std::vector<FaceRecord<Real>> take_state(const Triangulation& tri) const {
     std::vector<FaceRecord<Real>> state;
     {
       std::lock_guard<std::mutex> lock(spare.mutex);
       if constexpr (std::is_same_v<Real, float>) state.swap(spare.single); else state.swap(spare.twice);
     }
-    state.assign(initial.begin(), initial.end());
+    tri.fill_state(state, 1.0 / mean_edge, vertex_kind);
     return state;
   }
   template <class Real>
@@ -148,6 +172,7 @@ struct GeodesicSolver::Impl {
     if (requested != Precision::automatic) return requested;
     return tri.needs_double ? Precision::double_precision : Precision::single;
   }
+  void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options);
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_coincident_vertices(const Connectivity& conn);
   void build_delaunay();

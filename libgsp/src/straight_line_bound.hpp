@@ -15,7 +15,9 @@
 //
 // Not with SolverOptions::edge_lengths: a metric's lengths are not bounded by 3D segments.
 #include <gsp/geodesics.hpp>
-#include <gsp/layout.hpp>
+#include "index_maps.hpp"
+
+#include <gsp/geodesics.hpp>
 
 #include <cmath>
 #include <limits>
@@ -28,17 +30,17 @@ struct SourcePoint {
   double offset = 0;
 };
 
-// The sources as 3D points. `mesh` is the solver's reordered mesh, `layout` maps input
+// The sources as 3D points. `mesh` is the solver's reordered mesh, `maps` takes input
 // indices to it (sources name input vertices and faces; the corner order of a face is kept).
-inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const Layout& layout,
+inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const IndexMaps& maps,
                                               const std::vector<Source>& sources) {
   std::vector<SourcePoint> out;
   out.reserve(sources.size());
   for (const Source& s : sources) {
     if (s.kind == Source::Kind::vertex) {
-      out.push_back({mesh.positions[layout.vertex_rank[s.element]], s.offset});
+      out.push_back({mesh.positions[maps.vertex_to_layout(s.element)], s.offset});
     } else {
-      const Triangle& t = mesh.triangles[layout.face_rank[s.element]];
+      const Triangle& t = mesh.triangles[maps.face_to_layout(s.element)];
       const Vec3 p = s.barycentric[0] * mesh.positions[t[0]] + s.barycentric[1] * mesh.positions[t[1]] +
                      s.barycentric[2] * mesh.positions[t[2]];
       out.push_back({p, s.offset});

@@ -112,8 +112,8 @@ GeodesicOptions query_options(double max_distance, const std::string& strategy, 
 }
 
 Solver::Solver(TriangleMesh mesh, const SolverOptions& options, bool metric)
-    : mesh_(std::make_unique<TriangleMesh>(std::move(mesh))),
-      solver_(*mesh_, options),
+    : mesh_(std::make_shared<const TriangleMesh>(std::move(mesh))),
+      solver_(mesh_, options),
       metric_(metric),
       layout_(options.optimize_layout) {}
 

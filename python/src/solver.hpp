@@ -44,7 +44,7 @@ class Solver {
                                                            const GeodesicOptions* options);
 
  private:
-  std::unique_ptr<TriangleMesh> mesh_;   // stable address: the solver and tracer refer to it
+  std::shared_ptr<const TriangleMesh> mesh_;   // the solver shares it (no copy without a layout); the tracer refers to it
   GeodesicSolver solver_;
   bool metric_ = false;
   bool layout_ = true;

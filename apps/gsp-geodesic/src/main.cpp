@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace {
 
@@ -130,7 +131,8 @@ void run(cli::Context& ctx, const Options& o) {
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     so.edge_lengths = metric_lengths(ctx, metric, in);
-    GeodesicSolver solver(in.mesh, so);
+    // `in` outlives the solver: it shares the mesh (no copy when the file keeps its order).
+    GeodesicSolver solver(std::shared_ptr<const TriangleMesh>(&in.mesh, [](const TriangleMesh*) {}), so);
     ctx.timer().add("layout", solver.timings().layout);
     ctx.timer().add("build", solver.timings().build);
     GeodesicOptions go;

@@ -83,13 +83,12 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
   // Candidates come in batches, each processed in the solver's cache layout order: runs then
   // sweep the memory forward instead of jumping at random (the dart throwing stays the same:
   // each candidate is accepted iff no earlier sample is within r).
-  const std::vector<Index>& rank = solver_.face_memory_rank();
   std::vector<Sample> batch;
   std::size_t rejected_in_a_row = 0;
   while (rejected_in_a_row < options.max_rejections && field.uncovered() > 0) {
     batch.clear();
     for (std::size_t i = 0; i < kBatch; ++i) batch.push_back(points_.draw(mesh_, random));
-    std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) { return rank[a.face] < rank[b.face]; });
+    std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) { return solver_.face_memory_rank(a.face) < solver_.face_memory_rank(b.face); });
     for (const Sample& s : batch) {
       if (rejected_in_a_row >= options.max_rejections || field.uncovered() == 0) break;
       ++result.stats.candidates;
