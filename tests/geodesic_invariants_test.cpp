@@ -148,6 +148,22 @@ TEST(GeodesicInvariants, SharedMeshGivesTheSameFieldsAndIsNotCopiedWithoutLayout
   EXPECT_THROW(GeodesicSolver(std::shared_ptr<const TriangleMesh>()), InvalidInput);
 }
 
+TEST(GeodesicInvariants, PreparationOnTwoThreadsGivesTheSameSolver) {
+  const TriangleMesh m = curved_mesh();
+  SolverOptions one, two;
+  one.threads = 1;
+  two.threads = 2;   // forced: the mesh is below the automatic size
+  const GeodesicSolver a(m, one), b(m, two);
+  EXPECT_EQ(a.intrinsic_flips(), b.intrinsic_flips());
+  for (Source s : {Source::at_vertex(3), Source::in_face(40, {0.6, 0.2, 0.2})}) {
+    const GeodesicResult ra = a.compute({s}), rb = b.compute({s});
+    EXPECT_EQ(ra.vertex_distance, rb.vertex_distance);
+    EXPECT_EQ(ra.vertex_source, rb.vertex_source);
+  }
+  EXPECT_GT(b.timings().vertex_analysis, 0.0);
+  EXPECT_GT(b.timings().delaunay, 0.0);
+}
+
 TEST(GeodesicInvariants, StrategiesAgree) {
   const TriangleMesh m = curved_mesh();
   const GeodesicSolver solver(m);

@@ -15,9 +15,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 
 namespace gsp {
 
@@ -40,22 +42,18 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
       for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(maps.face_to_input(Index(f))) + i];
   }
   detail::snap_zero_lengths(input.length);
-  // Every halfedge starts as a ring of its own (boundary, skipped face, loop, zero-length
-  // edge), then the members of each radial ring are linked without the skipped faces'
-  // halfedges.
+  // A halfedge of a skipped face, a loop or a zero-length edge is a ring of its own; the
+  // others link to the next member of their radial ring that is not in a skipped face
+  // (itself on a boundary). One pass in halfedge order, no per-edge lists.
   std::vector<Index> plain(nh);
-  for (Index h = 0; h < nh; ++h) plain[h] = h;
-  std::vector<Index> members;
-  for (Index e = 0; e < conn.num_edges(); ++e) {
-    members.clear();
-    const Index first = conn.edge_halfedge[e];
-    if (detail::zero_length_edge(input.length, first)) continue;
-    Index h = first;
-    do {
-      if (!skipped_face[face_of(h)]) members.push_back(h);
-      h = conn.radial_next[h];
-    } while (h != first);
-    for (std::size_t k = 0; k < members.size(); ++k) plain[members[k]] = members[(k + 1) % members.size()];
+  for (Index h = 0; h < nh; ++h) {
+    const Index e = conn.halfedge_edge[h];
+    Index next = h;
+    if (e != kInvalidIndex && !skipped_face[face_of(h)] && !detail::zero_length_edge(input.length, conn.edge_halfedge[e])) {
+      next = conn.radial_next[h];
+      while (next != h && skipped_face[face_of(next)]) next = conn.radial_next[next];
+    }
+    plain[h] = next;
   }
   input.needs_double = detail::needs_double_lengths(input.length, skipped_face);
   input.set_direction_bits(std::move(plain));
@@ -111,6 +109,29 @@ void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
   }
 }
 
+void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn) {
+  bridge_vertices = intrinsic::bridge_vertices(mesh(), conn, skipped_face);
+  find_coincident_vertices(conn);
+  // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
+  std::vector<Index> nonmanifold = bridge_vertices;
+  nonmanifold.insert(nonmanifold.end(), coincident.begin(), coincident.end());
+  for (Index e = 0; e < conn.num_edges(); ++e)
+    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
+      nonmanifold.push_back(from_vertex(mesh(), conn.edge_halfedge[e]));
+      nonmanifold.push_back(to_vertex(mesh(), conn.edge_halfedge[e]));
+    }
+  // The connectivity's vertex corners are the input triangulation's; the rest goes before the
+  // Delaunay triangulation is complete (the run's peak of memory).
+  input.corner_begin = std::move(conn.vertex_corner_begin);
+  input.corners = std::move(conn.vertex_corners);
+  conn = Connectivity();
+  std::vector<std::uint8_t> boundary_halfedge(input.ring.size());
+  for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
+    boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;
+  vertex_kind = intrinsic::vertex_kinds(mesh(), boundary_halfedge, skipped_face, nonmanifold,
+                                        custom_lengths ? &input.length : nullptr);
+}
+
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
     : impl_(std::make_unique<Impl>()) {
   impl_->build(input, nullptr, options);
@@ -139,34 +160,51 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   } else {
     m.mesh_store = shared ? std::move(shared) : std::make_shared<const TriangleMesh>(input);
   }
-  auto t1 = Clock::now();
+  const auto t1 = Clock::now();
+  auto lap = [last = t1]() mutable {
+    const auto now = Clock::now();
+    const double s = std::chrono::duration<double>(now - last).count();
+    last = now;
+    return s;
+  };
   Connectivity conn = build_connectivity(m.mesh());
+  m.timings.connectivity = lap();
   m.build_input(conn, options.edge_lengths);
   m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
-  m.bridge_vertices = intrinsic::bridge_vertices(m.mesh(), conn, m.skipped_face);
-  m.find_coincident_vertices(conn);
-  // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
-  std::vector<Index> nonmanifold = m.bridge_vertices;
-  nonmanifold.insert(nonmanifold.end(), m.coincident.begin(), m.coincident.end());
-  for (Index e = 0; e < conn.num_edges(); ++e)
-    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
-      nonmanifold.push_back(from_vertex(m.mesh(), conn.edge_halfedge[e]));
-      nonmanifold.push_back(to_vertex(m.mesh(), conn.edge_halfedge[e]));
+  m.timings.input_tables = lap();
+  // The vertices' analysis and the Delaunay flips read the input's tables and write apart: on
+  // a big mesh they run side by side (the flips on this thread).
+  const bool two = options.threads != 1 && options.intrinsic_delaunay &&
+                   (options.threads >= 2 || (m.mesh().num_faces() >= kParallelMinFaces &&
+                                             std::thread::hardware_concurrency() >= 2 &&
+                                             !detail::inside_parallel_region()));
+  if (!two) {
+    m.analyse_vertices(conn);
+    m.timings.vertex_analysis = lap();
+    if (options.intrinsic_delaunay) m.build_delaunay();
+    m.timings.delaunay = lap();
+  } else {
+    std::exception_ptr failed;
+    std::thread analysis([&] {
+      const auto start = Clock::now();
+      try {
+        m.analyse_vertices(conn);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+      m.timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
+    });
+    try {
+      m.build_delaunay();
+    } catch (...) {
+      analysis.join();
+      throw;
     }
-  // The connectivity's vertex corners are the input triangulation's; the rest goes before the
-  // flips, which hold a second triangulation (the peak of the run's memory).
-  m.input.corner_begin = std::move(conn.vertex_corner_begin);
-  m.input.corners = std::move(conn.vertex_corners);
-  conn = Connectivity();
-  {
-    std::vector<std::uint8_t> boundary_halfedge(m.input.ring.size());
-    for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
-      boundary_halfedge[h] = (m.input.ring[h] & detail::kRingIndexMask) == h;
-    m.vertex_kind = intrinsic::vertex_kinds(m.mesh(), boundary_halfedge, m.skipped_face, nonmanifold,
-                                            m.custom_lengths ? &m.input.length : nullptr);
+    m.timings.delaunay = lap();
+    analysis.join();
+    if (failed) std::rethrow_exception(failed);
   }
-  if (options.intrinsic_delaunay) m.build_delaunay();
-  auto t2 = Clock::now();
+  const auto t2 = Clock::now();
   m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
   m.timings.build = std::chrono::duration<double>(t2 - t1).count();
 }

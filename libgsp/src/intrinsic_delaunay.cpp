@@ -36,6 +36,13 @@ bool same_direction(const IntrinsicTriangulation& t, Index h, Index g) {
 
 bool is_delaunay(const IntrinsicTriangulation& t, Index h, Index g) {
   const double lab = t.length[h];
+  // Both opposite angles at most 90 degrees (cosines >= 0): their sum is at most pi, and most
+  // edges of a mesh end here without an acos (the same answer as the angles below).
+  const double c1 = t.length[next_halfedge(h)], a1 = t.length[prev_halfedge(h)];
+  const double c2 = t.length[next_halfedge(g)], a2 = t.length[prev_halfedge(g)];
+  if (c1 > 0 && a1 > 0 && c2 > 0 && a2 > 0 && c1 * c1 + a1 * a1 - lab * lab >= 0 &&
+      c2 * c2 + a2 * a2 - t.length[g] * t.length[g] >= 0)
+    return true;
   const double ac = opposite_angle(t.length[next_halfedge(h)], t.length[prev_halfedge(h)], lab);
   const double ad = opposite_angle(t.length[next_halfedge(g)], t.length[prev_halfedge(g)], t.length[g]);
   return ac + ad <= 3.14159265358979323846 * (1 + 1e-9);
@@ -44,7 +51,7 @@ bool is_delaunay(const IntrinsicTriangulation& t, Index h, Index g) {
 // Whether a patch (faces with their winding relative to its first face) is to be wound the
 // other way round from its first face; see the header for the rule.
 bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& patch,
-                  const std::vector<std::int8_t>& reverse, std::size_t reversed) {
+                  const std::vector<std::int8_t>& reverse, std::size_t reversed, bool closed) {
   if (!t.positions) return 2 * reversed > patch.size();   // majority; a tie keeps the first face's
   // 6 x signed volume of the patch as wound like its first face, about `origin`, and the sum
   // of its tetrahedra's absolute values.
@@ -59,12 +66,6 @@ bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& pat
     }
     return v;
   };
-  bool closed = true;
-  for (Index f : patch)
-    for (Index i = 0; i < 3 && closed; ++i) {
-      const Index h = 3 * f + i, g = t.ring[h];
-      closed = g != h && t.ring[g] == h && !t.skipped[face_of(g)];
-    }
   if (closed) {
     const double v = volume(Vec3{0, 0, 0}, nullptr);
     if (v != 0) return v < 0;
@@ -97,6 +98,7 @@ std::size_t orient_consistently(IntrinsicTriangulation& t) {
     reverse[root] = 0;
     stack.push_back(root);
     std::size_t reversed = 0;
+    bool closed = true;   // every edge of the patch has exactly two faces, none skipped
     while (!stack.empty()) {
       const Index f = stack.back();
       stack.pop_back();
@@ -104,14 +106,18 @@ std::size_t orient_consistently(IntrinsicTriangulation& t) {
       reversed += std::size_t(reverse[f]);
       for (Index i = 0; i < 3; ++i) {
         const Index h = 3 * f + i, g = t.ring[h];
-        if (g == h || t.ring[g] != h) continue;   // boundary or non-manifold: not a patch link
+        if (g == h || t.ring[g] != h) {   // boundary or non-manifold: not a patch link
+          closed = false;
+          continue;
+        }
         const Index n = face_of(g);
+        closed = closed && !t.skipped[n];
         if (n == f || t.skipped[n] || reverse[n] >= 0) continue;   // first visit decides (a Moebius
         reverse[n] = std::int8_t(reverse[f] ^ int(same_direction(t, h, g)));   // strip keeps one seam)
         stack.push_back(n);
       }
     }
-    const bool invert = invert_patch(t, patch, reverse, reversed);
+    const bool invert = invert_patch(t, patch, reverse, reversed, closed);
     for (Index f : patch)
       if (bool(reverse[f]) != invert) flip_face[f] = true, ++count;
   }

@@ -47,9 +47,10 @@ void snap_zero_lengths(std::vector<double>& length) {
 bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
   for (std::size_t f = 0; f < skipped_face.size(); ++f) {
     if (skipped_face[f]) continue;
-    double s[3] = {length[3 * f], length[3 * f + 1], length[3 * f + 2]};
-    std::sort(s, s + 3, [](double x, double y) { return x > y; });
-    const double x = s[0], y = s[1], z = s[2];   // x >= y >= z
+    // x >= y >= z without a sort call (this runs over every face, twice per solver).
+    const double a = length[3 * f], b = length[3 * f + 1], c = length[3 * f + 2];
+    const double hi = std::max(a, b), lo = std::min(a, b);
+    const double x = std::max(hi, c), z = std::min(lo, c), y = std::max(lo, std::min(hi, c));
     if (!(x > 0)) continue;                       // all corners at one point: nothing to unfold
     // 16 area^2 by Heron's formula in Kahan's ordering (accurate for needles and caps).
     const double p = (x + (y + z)) * (z - (x - y)) * (z + (x - y)) * (x + (y - z));

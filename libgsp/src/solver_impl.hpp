@@ -175,6 +175,9 @@ struct GeodesicSolver::Impl {
   void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options);
   void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
   void find_coincident_vertices(const Connectivity& conn);
+  // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
+  // triangulation and releases the rest of `conn`.
+  void analyse_vertices(Connectivity& conn);
   void build_delaunay();
   template <class Real>
   GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,

@@ -135,6 +135,12 @@ void run(cli::Context& ctx, const Options& o) {
     GeodesicSolver solver(std::shared_ptr<const TriangleMesh>(&in.mesh, [](const TriangleMesh*) {}), so);
     ctx.timer().add("layout", solver.timings().layout);
     ctx.timer().add("build", solver.timings().build);
+    const SolverTimings& bt = solver.timings();
+    cli::Json& phases = ctx.stats()["build_phases"];
+    phases["connectivity"] = bt.connectivity;
+    phases["input_tables"] = bt.input_tables;
+    phases["vertex_analysis"] = bt.vertex_analysis;
+    phases["delaunay"] = bt.delaunay;
     GeodesicOptions go;
     go.strategy = strategy;
     go.precision = precision;

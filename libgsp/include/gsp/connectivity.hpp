@@ -25,7 +25,7 @@ struct Connectivity {
   // Per undirected edge: one of its halfedges.
   std::vector<Index> edge_halfedge;
   // Vertex -> incident corners (3*f + i with triangles[f][i] == v), CSR: the corners of v are
-  // vertex_corners[vertex_corner_begin[v] .. vertex_corner_begin[v+1]).
+  // vertex_corners[vertex_corner_begin[v] .. vertex_corner_begin[v+1]), in increasing order.
   std::vector<Index> vertex_corner_begin;
   std::vector<Index> vertex_corners;
 

@@ -190,6 +190,10 @@ class LocalWorkspace {
 struct SolverTimings {
   double layout = 0;   // compute_cache_layout + reordering
   double build = 0;    // connectivity, radial rings, per-halfedge tables, intrinsic Delaunay flips
+  // The parts of `build`: connectivity (radial rings and vertex corners), the input's
+  // triangulation (lengths, links), the vertices' analysis (bridge and coincident vertices,
+  // flat / saddle kinds) and the intrinsic Delaunay triangulation (winding and flips).
+  double connectivity = 0, input_tables = 0, vertex_analysis = 0, delaunay = 0;
 };
 
 struct SolverOptions {
@@ -208,6 +212,10 @@ struct SolverOptions {
   // longest edge. With lengths, compute() refuses want_face_sources and goal_directed (both 3D
   // constructions); distances, labels and targets work as usual.
   std::vector<double> edge_lengths;
+  // Threads of the preparation: 0 = automatic (two on meshes of kParallelMinFaces faces or
+  // more, outside a parallel region: the vertices' analysis runs beside the intrinsic Delaunay
+  // flips), 1 = one. The result is the same either way.
+  unsigned threads = 0;
 };
 
 // Prepares a mesh once (layout, connectivity, intrinsic per-halfedge geometry) and answers
