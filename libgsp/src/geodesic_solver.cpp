@@ -24,9 +24,7 @@
 namespace gsp {
 
 
-void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vector<double>& edge_lengths) {
-  const std::size_t nh = conn.num_halfedges();
-  if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
+void GeodesicSolver::Impl::build_lengths(const std::vector<double>& edge_lengths) {
   skipped_face.assign(mesh().num_faces(), false);
   for (std::size_t f = 0; f < mesh().num_faces(); ++f) {
     const Triangle& t = mesh().triangles[f];
@@ -42,6 +40,13 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
       for (int i = 0; i < 3; ++i) input.length[3 * f + i] = edge_lengths[3 * std::size_t(maps.face_to_input(Index(f))) + i];
   }
   detail::snap_zero_lengths(input.length);
+  input.needs_double = detail::needs_double_lengths(input.length, skipped_face);
+  mean_edge = detail::mean_edge_length(input.length, skipped_face);
+}
+
+void GeodesicSolver::Impl::build_links(const Connectivity& conn) {
+  const std::size_t nh = conn.num_halfedges();
+  if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
   // A halfedge of a skipped face, a loop or a zero-length edge is a ring of its own; the
   // others link to the next member of their radial ring that is not in a skipped face
   // (itself on a boundary). One pass in halfedge order, no per-edge lists.
@@ -55,7 +60,6 @@ void GeodesicSolver::Impl::build_input(const Connectivity& conn, const std::vect
     }
     plain[h] = next;
   }
-  input.needs_double = detail::needs_double_lengths(input.length, skipped_face);
   input.set_direction_bits(std::move(plain));
 }
 
@@ -167,18 +171,38 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
     last = now;
     return s;
   };
-  Connectivity conn = build_connectivity(m.mesh());
-  m.timings.connectivity = lap();
-  m.build_input(conn, options.edge_lengths);
-  m.mean_edge = detail::mean_edge_length(m.input.length, m.skipped_face);
-  m.timings.input_tables = lap();
-  // The vertices' analysis and the Delaunay flips read the input's tables and write apart: on
-  // a big mesh they run side by side (the flips on this thread).
-  const bool two = options.threads != 1 && options.intrinsic_delaunay &&
-                   (options.threads >= 2 || (m.mesh().num_faces() >= kParallelMinFaces &&
-                                             std::thread::hardware_concurrency() >= 2 &&
-                                             !detail::inside_parallel_region()));
+  // On a big mesh two threads: the connectivity beside the lengths, then the vertices'
+  // analysis beside the Delaunay flips (each pair reads the same tables and writes apart).
+  const bool two = options.threads != 1 && (options.threads >= 2 || (m.mesh().num_faces() >= kParallelMinFaces &&
+                                                                       std::thread::hardware_concurrency() >= 2 &&
+                                                                       !detail::inside_parallel_region()));
+  Connectivity conn;
   if (!two) {
+    conn = build_connectivity(m.mesh());
+    m.timings.connectivity = lap();
+    m.build_lengths(options.edge_lengths);
+  } else {
+    std::exception_ptr failed;
+    std::thread lengths([&] {
+      try {
+        m.build_lengths(options.edge_lengths);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    });
+    try {
+      conn = build_connectivity(m.mesh());
+    } catch (...) {
+      lengths.join();
+      throw;
+    }
+    m.timings.connectivity = lap();
+    lengths.join();
+    if (failed) std::rethrow_exception(failed);
+  }
+  m.build_links(conn);
+  m.timings.input_tables = lap();
+  if (!two || !options.intrinsic_delaunay) {
     m.analyse_vertices(conn);
     m.timings.vertex_analysis = lap();
     if (options.intrinsic_delaunay) m.build_delaunay();

@@ -173,7 +173,10 @@ struct GeodesicSolver::Impl {
     return tri.needs_double ? Precision::double_precision : Precision::single;
   }
   void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options);
-  void build_input(const Connectivity& conn, const std::vector<double>& edge_lengths);
+  // The input triangulation: skipped faces, lengths (and the mean edge) from the mesh alone,
+  // then the radial links from the connectivity.
+  void build_lengths(const std::vector<double>& edge_lengths);
+  void build_links(const Connectivity& conn);
   void find_coincident_vertices(const Connectivity& conn);
   // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
   // triangulation and releases the rest of `conn`.

@@ -131,6 +131,7 @@ void run(cli::Context& ctx, const Options& o) {
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     so.edge_lengths = metric_lengths(ctx, metric, in);
+    so.threads = o.threads == 1 ? 1 : 0;   // the preparation: automatic unless one thread is asked for
     // `in` outlives the solver: it shares the mesh (no copy when the file keeps its order).
     GeodesicSolver solver(std::shared_ptr<const TriangleMesh>(&in.mesh, [](const TriangleMesh*) {}), so);
     ctx.timer().add("layout", solver.timings().layout);

@@ -190,9 +190,10 @@ class LocalWorkspace {
 struct SolverTimings {
   double layout = 0;   // compute_cache_layout + reordering
   double build = 0;    // connectivity, radial rings, per-halfedge tables, intrinsic Delaunay flips
-  // The parts of `build`: connectivity (radial rings and vertex corners), the input's
-  // triangulation (lengths, links), the vertices' analysis (bridge and coincident vertices,
-  // flat / saddle kinds) and the intrinsic Delaunay triangulation (winding and flips).
+  // The parts of `build`: connectivity (radial rings and vertex corners; on two threads the
+  // input's lengths beside it), the input's triangulation (lengths, links), the vertices'
+  // analysis (bridge and coincident vertices, flat / saddle kinds) and the intrinsic Delaunay
+  // triangulation (winding and flips; on two threads the analysis beside it).
   double connectivity = 0, input_tables = 0, vertex_analysis = 0, delaunay = 0;
 };
 
@@ -213,8 +214,8 @@ struct SolverOptions {
   // constructions); distances, labels and targets work as usual.
   std::vector<double> edge_lengths;
   // Threads of the preparation: 0 = automatic (two on meshes of kParallelMinFaces faces or
-  // more, outside a parallel region: the vertices' analysis runs beside the intrinsic Delaunay
-  // flips), 1 = one. The result is the same either way.
+  // more, outside a parallel region: the lengths beside the connectivity, the vertices'
+  // analysis beside the intrinsic Delaunay flips), 1 = one. The result is the same either way.
   unsigned threads = 0;
 };
 
