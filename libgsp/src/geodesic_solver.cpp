@@ -1,5 +1,6 @@
 #include "intrinsic_delaunay.hpp"
 #include "query_steps.hpp"
+#include "side_by_side.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
 #include "validate_options.hpp"
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <exception>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -154,15 +154,14 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   validate(input);
   if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(input, options.edge_lengths);
   auto t0 = Clock::now();
-  Impl& m = *this;
-  m.custom_lengths = !options.edge_lengths.empty();
-  m.heuristic = options.heuristic;
+  custom_lengths = !options.edge_lengths.empty();
+  heuristic = options.heuristic;
   if (options.optimize_layout) {
     Layout layout = compute_cache_layout(input);
-    m.mesh_store = std::make_shared<const TriangleMesh>(apply_layout(input, layout));
-    m.maps = detail::IndexMaps(std::move(layout));
+    mesh_store = std::make_shared<const TriangleMesh>(apply_layout(input, layout));
+    maps = detail::IndexMaps(std::move(layout));
   } else {
-    m.mesh_store = shared ? std::move(shared) : std::make_shared<const TriangleMesh>(input);
+    mesh_store = shared ? std::move(shared) : std::make_shared<const TriangleMesh>(input);
   }
   const auto t1 = Clock::now();
   auto lap = [last = t1]() mutable {
@@ -173,64 +172,43 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   };
   // On a big mesh two threads: the connectivity beside the lengths, then the vertices'
   // analysis beside the Delaunay flips (each pair reads the same tables and writes apart).
-  const bool two = options.threads != 1 && (options.threads >= 2 || (m.mesh().num_faces() >= kParallelMinFaces &&
+  const bool two = options.threads != 1 && (options.threads >= 2 || (mesh().num_faces() >= kParallelMinFaces &&
                                                                        std::thread::hardware_concurrency() >= 2 &&
                                                                        !detail::inside_parallel_region()));
   Connectivity conn;
   if (!two) {
-    conn = build_connectivity(m.mesh());
-    m.timings.connectivity = lap();
-    m.build_lengths(options.edge_lengths);
+    conn = build_connectivity(mesh());
+    timings.connectivity = lap();
+    build_lengths(options.edge_lengths);
   } else {
-    std::exception_ptr failed;
-    std::thread lengths([&] {
-      try {
-        m.build_lengths(options.edge_lengths);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-    });
-    try {
-      conn = build_connectivity(m.mesh());
-    } catch (...) {
-      lengths.join();
-      throw;
-    }
-    m.timings.connectivity = lap();
-    lengths.join();
-    if (failed) std::rethrow_exception(failed);
+    detail::side_by_side([&] { build_lengths(options.edge_lengths); },
+                         [&] {
+                           conn = build_connectivity(mesh());
+                           timings.connectivity = lap();
+                         });
   }
-  m.build_links(conn);
-  m.timings.input_tables = lap();
+  build_links(conn);
+  timings.input_tables = lap();
   if (!two || !options.intrinsic_delaunay) {
-    m.analyse_vertices(conn);
-    m.timings.vertex_analysis = lap();
-    if (options.intrinsic_delaunay) m.build_delaunay();
-    m.timings.delaunay = lap();
+    analyse_vertices(conn);
+    timings.vertex_analysis = lap();
+    if (options.intrinsic_delaunay) build_delaunay();
+    timings.delaunay = lap();
   } else {
-    std::exception_ptr failed;
-    std::thread analysis([&] {
-      const auto start = Clock::now();
-      try {
-        m.analyse_vertices(conn);
-      } catch (...) {
-        failed = std::current_exception();
-      }
-      m.timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
-    });
-    try {
-      m.build_delaunay();
-    } catch (...) {
-      analysis.join();
-      throw;
-    }
-    m.timings.delaunay = lap();
-    analysis.join();
-    if (failed) std::rethrow_exception(failed);
+    detail::side_by_side(
+        [&] {
+          const auto start = Clock::now();
+          analyse_vertices(conn);
+          timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
+        },
+        [&] {
+          build_delaunay();
+          timings.delaunay = lap();
+        });
   }
   const auto t2 = Clock::now();
-  m.timings.layout = std::chrono::duration<double>(t1 - t0).count();
-  m.timings.build = std::chrono::duration<double>(t2 - t1).count();
+  timings.layout = std::chrono::duration<double>(t1 - t0).count();
+  timings.build = std::chrono::duration<double>(t2 - t1).count();
 }
 
 GeodesicSolver::~GeodesicSolver() = default;
