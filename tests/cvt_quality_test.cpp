@@ -111,8 +111,8 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
     // Points in a box 20% larger than the mesh's: inside, outside and far away.
     const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
                  lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
-    const SurfacePoint a = index.closest(p), b = closest_surface_point(m, p);
-    ASSERT_NE(a.face, kInvalidIndex);
+    const ClosestPoint a = index.closest(p), b = closest_surface_point(m, p);
+    ASSERT_NE(a.point.element, kInvalidIndex);
     EXPECT_NEAR(a.distance, b.distance, 1e-9 * (1 + b.distance));
     EXPECT_NEAR(distance(a.position, p), a.distance, 1e-9 * (1 + a.distance));
   }

@@ -38,9 +38,9 @@ std::array<double, 3> closest_point_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) 
   return {1 - v - w, v, w};
 }
 
-SurfacePoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
+ClosestPoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
   if (!is_finite(p)) throw InvalidInput("query point has a non-finite coordinate");
-  SurfacePoint best;
+  ClosestPoint best;
   best.distance = std::numeric_limits<double>::infinity();
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -49,9 +49,9 @@ SurfacePoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
     const auto w = closest_point_on_triangle(p, a, b, c);
     const Vec3 q = w[0] * a + w[1] * b + w[2] * c;
     const double d = distance(p, q);
-    if (d < best.distance) best = {Index(f), w, q, d};
+    if (d < best.distance) best = {SurfacePoint::in_face(Index(f), w), q, d};
   }
-  if (best.face == kInvalidIndex) throw InvalidInput("the mesh has no face to snap a point to");
+  if (best.point.element == kInvalidIndex) throw InvalidInput("the mesh has no face to snap a point to");
   return best;
 }
 

@@ -50,16 +50,15 @@ GeodesicResult DijkstraSolver::compute(const std::vector<Source>& sources, doubl
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
     const Index label = static_cast<Index>(s);
-    if (src.kind == Source::Kind::vertex) {
-      if (src.element >= nv) throw InvalidInput("source vertex " + std::to_string(src.element) + " does not exist");
+    // This baseline's messages leave out the counts GSP's give.
+    if (!src.exists_in(mesh_))
+      throw InvalidInput("source " + std::string(src.is_vertex() ? "vertex " : "face ") + std::to_string(src.element) +
+                         " does not exist");
+    if (src.is_vertex()) {
       relax(src.element, src.offset, label);
     } else {
-      if (src.element >= mesh_.num_faces())
-        throw InvalidInput("source face " + std::to_string(src.element) + " does not exist");
-      const Triangle& t = mesh_.triangles[src.element];
-      const auto& b = src.barycentric;
-      const Vec3 p = b[0] * mesh_.positions[t[0]] + b[1] * mesh_.positions[t[1]] + b[2] * mesh_.positions[t[2]];
-      for (Index v : t) relax(v, src.offset + distance(p, mesh_.positions[v]), label);
+      const Vec3 p = src.position(mesh_);
+      for (Index v : mesh_.triangles[src.element]) relax(v, src.offset + distance(p, mesh_.positions[v]), label);
     }
   }
   while (!heap.empty()) {

@@ -29,25 +29,23 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
                                 std::vector<QueueEntry<Real>>& queue, std::vector<VertexSeed>& vertex_seeds,
                                 detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const {
   const std::vector<double>& length = tri.length;
-  const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const double scale = 1.0 / mean_edge;
   if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^26 - 1)");
-  struct FacePoint {
-    Index face, label;
-    double w[3];
-    double offset;
+  // A face-point source as seeded: its face in the layout's order, its weights normalised,
+  // and its index in `sources`.
+  struct SeededFacePoint {
+    Source source;
+    Index label;
   };
-  std::vector<FacePoint> face_points;   // multi-source runs only (see below)
+  std::vector<SeededFacePoint> face_points;   // multi-source runs only (see below)
 
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
     const Index label = static_cast<Index>(s);
     if (!std::isfinite(src.offset) || src.offset < 0)
       throw InvalidInput("source " + std::to_string(s) + ": offset must be finite and >= 0");
-    if (src.kind == Source::Kind::vertex) {
-      if (src.element >= nv)
-        throw InvalidInput("source vertex " + std::to_string(src.element) + " does not exist (" +
-                           std::to_string(nv) + " vertices)");
+    if (!src.exists_in(mesh())) throw InvalidInput("source " + src.missing_from(mesh()));
+    if (src.is_vertex()) {
       const Index v = maps.vertex_to_layout(src.element);
       // Repeated vertices are resolved where the seeds are applied (the smallest offset, the
       // first source on ties).
@@ -63,14 +61,11 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         }
       }
     } else {
-      if (src.element >= nf)
-        throw InvalidInput("source face " + std::to_string(src.element) + " does not exist (" +
-                           std::to_string(nf) + " faces)");
       const auto& b = src.barycentric;
-      const double sum = b[0] + b[1] + b[2];
-      if (!(b[0] >= 0 && b[1] >= 0 && b[2] >= 0) || std::abs(sum - 1) > 1e-6)
+      if (!are_barycentric(b))
         throw InvalidInput("source " + std::to_string(s) +
                            ": barycentric coordinates must be >= 0 and sum to 1");
+      const double sum = b[0] + b[1] + b[2];
       const Index f = maps.face_to_layout(src.element);
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
       const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
@@ -78,22 +73,24 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
         if (seeded) seeded->push_back(f);
       }
-      if (sources.size() > 1) face_points.push_back({f, label, {w[0], w[1], w[2]}, src.offset});
+      if (sources.size() > 1) face_points.push_back({Source::in_face(f, {w[0], w[1], w[2]}, src.offset), label});
     }
   }
   // A face holds one virtual source: of two sources in one face only the one nearer the
   // centroid is kept, and the other would vanish. A source that lost its face goes on from
   // the face's corners instead (each a vertex source with the straight in-face distance as
   // offset): exact at the corners, the geodesic through a corner beyond them.
-  for (const FacePoint& fp : face_points) {
-    if (state[fp.face].source() == fp.label) continue;
+  for (const SeededFacePoint& fp : face_points) {
+    const Index face = fp.source.element;
+    const auto& w = fp.source.barycentric;
+    if (state[face].source() == fp.label) continue;
     double p[3][2];
-    detail::canonical_corners(length, fp.face, 1.0, p);
-    const double px = fp.w[0] * p[0][0] + fp.w[1] * p[1][0] + fp.w[2] * p[2][0];
-    const double py = fp.w[0] * p[0][1] + fp.w[1] * p[1][1] + fp.w[2] * p[2][1];
+    detail::canonical_corners(length, face, 1.0, p);
+    const double px = w[0] * p[0][0] + w[1] * p[1][0] + w[2] * p[2][0];
+    const double py = w[0] * p[0][1] + w[1] * p[1][1] + w[2] * p[2][1];
     for (Index i = 0; i < 3; ++i) {
-      const Index v = tri.triangles()[fp.face][i];
-      const double offset = fp.offset + std::hypot(p[i][0] - px, p[i][1] - py);   // model units
+      const Index v = tri.triangles()[face][i];
+      const double offset = fp.source.offset + std::hypot(p[i][0] - px, p[i][1] - py);   // model units
       vertex_seeds.push_back({v, offset, fp.label});
       if (goal) goal->vertex_value(v, Real(offset * scale));
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {

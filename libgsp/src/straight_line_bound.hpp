@@ -14,7 +14,6 @@
 // reported (PropagationStats::raised_to_line) so the cause stays measurable.
 //
 // Not with SolverOptions::edge_lengths: a metric's lengths are not bounded by 3D segments.
-#include <gsp/geodesics.hpp>
 #include "index_maps.hpp"
 
 #include <gsp/geodesics.hpp>
@@ -25,6 +24,7 @@
 
 namespace gsp::detail {
 
+// A source as the bound needs it: where it is in 3D, and its offset.
 struct SourcePoint {
   Vec3 position;
   double offset = 0;
@@ -37,14 +37,9 @@ inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const In
   std::vector<SourcePoint> out;
   out.reserve(sources.size());
   for (const Source& s : sources) {
-    if (s.kind == Source::Kind::vertex) {
-      out.push_back({mesh.positions[maps.vertex_to_layout(s.element)], s.offset});
-    } else {
-      const Triangle& t = mesh.triangles[maps.face_to_layout(s.element)];
-      const Vec3 p = s.barycentric[0] * mesh.positions[t[0]] + s.barycentric[1] * mesh.positions[t[1]] +
-                     s.barycentric[2] * mesh.positions[t[2]];
-      out.push_back({p, s.offset});
-    }
+    const SurfacePoint in_layout = s.is_vertex() ? SurfacePoint::at_vertex(maps.vertex_to_layout(s.element))
+                                                 : SurfacePoint::in_face(maps.face_to_layout(s.element), s.barycentric);
+    out.push_back({in_layout.position(mesh), s.offset});
   }
   return out;
 }

@@ -21,8 +21,8 @@ ResolvedSources resolve_sources(const Options& o, const cli::LoadedMesh& in) {
     }
   for (const std::string& arg : o.source_points) {
     const Vec3 p = cli::parse_vec3(arg, "--source-point");
-    const SurfacePoint s = closest_surface_point(mesh, p);
-    r.sources.push_back(Source::in_face(s.face, s.barycentric));
+    const ClosestPoint s = closest_surface_point(mesh, p);
+    r.sources.push_back(Source::at(s.point));
     r.positions.push_back(s.position);
     r.max_snap_distance = std::max(r.max_snap_distance, s.distance);
   }

@@ -19,8 +19,8 @@ ResolvedEndpoint resolve_endpoint(const std::string& text, const std::string& op
                          std::to_string(mesh.num_faces()) + " faces)");
     r.endpoint = pathfinding::Endpoint::in_face(fp.face, {std::max(0.0, 1 - fp.u - fp.v), fp.u, fp.v});
   } else if (text.find(',') != std::string::npos) {
-    const SurfacePoint s = closest_surface_point(mesh, cli::parse_vec3(text, option));
-    r.endpoint = pathfinding::Endpoint::in_face(s.face, s.barycentric);
+    const ClosestPoint s = closest_surface_point(mesh, cli::parse_vec3(text, option));
+    r.endpoint = pathfinding::Endpoint::in_face(s.point.element, s.point.barycentric);
     r.snap_distance = s.distance;
   } else {
     const std::vector<Index> v = cli::parse_index_list(text, option);

@@ -126,8 +126,8 @@ void evaluate(cli::Context& ctx, const Options& o, double radius_arg) {
   double snapped = 0;
   ctx.timer().time("snap", [&] {
     for (const Vec3& p : points.mesh.positions) {
-      const SurfacePoint s = closest_surface_point(in.mesh, p);
-      result.samples.push_back(sampling::make_sample(in.mesh, s.face, s.barycentric));
+      const ClosestPoint s = closest_surface_point(in.mesh, p);
+      result.samples.push_back(sampling::make_sample(in.mesh, s.point.element, s.point.barycentric));
       snapped = std::max(snapped, s.distance);
     }
   });

@@ -74,7 +74,7 @@ bool CapFlipCheck::keeps_surface(Index f, Index g, Index a, Index b, Index cc, I
   c_.grid.near(centre, reach + bound_, [&](Index w) {
     if (!ok) return;
     const Vec3 z = c_.samples.positions[w];
-    const Index nearest_face = out_->closest(z).face;
+    const Index nearest_face = out_->closest(z).point.element;
     if (nearest_face == f || nearest_face == g) ok = stays(q, z);
   });
   return ok;

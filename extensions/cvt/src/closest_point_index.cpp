@@ -31,7 +31,7 @@ struct Query {
   const TriangleMesh* mesh;
   const std::vector<Index>* faces;
   Vec3 p;
-  SurfacePoint best;
+  ClosestPoint best;
 };
 
 bool query_triangle(RTCPointQueryFunctionArguments* args) {
@@ -43,8 +43,7 @@ bool query_triangle(RTCPointQueryFunctionArguments* args) {
   const Vec3 x = w[0] * a + w[1] * b + w[2] * c;
   const double d = distance(x, q->p);
   if (d >= q->best.distance) return false;
-  q->best.face = f;
-  q->best.barycentric = w;
+  q->best.point = SurfacePoint::in_face(f, w);
   q->best.position = x;
   q->best.distance = d;
   // Shrink the search, with a margin for the float boxes.
@@ -89,7 +88,7 @@ ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make
 
 ClosestPointIndex::~ClosestPointIndex() = default;
 
-SurfacePoint ClosestPointIndex::closest(Vec3 p) const {
+ClosestPoint ClosestPointIndex::closest(Vec3 p) const {
   const Impl& s = *impl_;
   Query q{this, &s.mesh, &s.faces, p, {}};
   q.best.distance = std::numeric_limits<double>::infinity();

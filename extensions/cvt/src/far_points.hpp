@@ -17,8 +17,8 @@ struct FarPoint {
 // Appends point w of `points` when it lies farther than `bound` from the mesh `mesh_index` is over.
 inline void add_if_far(const ClosestPointIndex& mesh_index, const std::vector<Vec3>& points, Index w, double bound,
                        std::vector<FarPoint>& far) {
-  const SurfacePoint sp = mesh_index.closest(points[w]);
-  if (sp.face != kInvalidIndex && sp.distance > bound) far.push_back({sp.distance, w, sp.face});
+  const ClosestPoint c = mesh_index.closest(points[w]);
+  if (c.point.element != kInvalidIndex && c.distance > bound) far.push_back({c.distance, w, c.point.element});
 }
 
 }  // namespace gsp::cvt::detail

@@ -41,8 +41,8 @@ std::vector<Vec3> under_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3
     const Vec3 b = c.m.positions[t[(k + 1) % 3]], e = c.m.positions[t[(k + 2) % 3]];
     reach = std::max(reach, distance(x0, b));
     for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
-      const SurfacePoint sp = c.index.closest(z);
-      if (sp.face != kInvalidIndex) under.push_back(sp.position);
+      const ClosestPoint sp = c.index.closest(z);
+      if (sp.point.element != kInvalidIndex) under.push_back(sp.position);
     }
   }
   c.grid.near(x0, reach, [&](Index w) {

@@ -46,8 +46,8 @@ void try_pulling(const SmoothingContext& c, Index v, Vec3 z, Vec3 z_normal, doub
   const double q0 = signed_quality(c, v, x0, false, c.surf_n[v]);
   SurfaceGuard guard(c, v, normal, pull_distance);
   for (double t : {1.0, 0.75, 0.5, 0.35, 0.25}) {
-    const SurfacePoint sp = c.index.closest(x0 + t * (z - x0));
-    if (sp.face == kInvalidIndex) continue;
+    const ClosestPoint sp = c.index.closest(x0 + t * (z - x0));
+    if (sp.point.element == kInvalidIndex) continue;
     const Vec3 y = sp.position;
     const double dz = ring_distance(c, v, z, y);
     if (dz >= 0.98 * best.d) continue;

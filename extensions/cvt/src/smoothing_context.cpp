@@ -35,9 +35,9 @@ void SmoothingContext::place_on_curves() {
   }
 }
 
-Vec3 SmoothingContext::surface_normal(const SurfacePoint& sp) const {
-  if (sp.face == kInvalidIndex) return Vec3{};
-  const Triangle& st = surface.triangles[sp.face];
+Vec3 SmoothingContext::surface_normal(const ClosestPoint& sp) const {
+  if (sp.point.element == kInvalidIndex) return Vec3{};
+  const Triangle& st = surface.triangles[sp.point.element];
   const Vec3 n = normal(surface.positions[st[0]], surface.positions[st[1]], surface.positions[st[2]]);
   const double l = norm(n);
   return l > 0 ? (1.0 / l) * n : Vec3{};

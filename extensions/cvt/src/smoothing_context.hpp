@@ -36,7 +36,7 @@ struct SmoothingContext {
   std::vector<double> arc;
 
   // The unit normal of the surface at a point of it (its face's); zero off the surface.
-  Vec3 surface_normal(const SurfacePoint& sp) const;
+  Vec3 surface_normal(const ClosestPoint& sp) const;
   // The sum of the (unnormalised) normals of v's triangles: the side v's sheet faces.
   Vec3 ring_normal(Index v) const;
   // Keeps surf_n in step with the positions, as the checks of later moves read it.

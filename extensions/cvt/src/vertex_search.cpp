@@ -121,9 +121,9 @@ bool MoveSearch::slide_along_boundary() {
 // Candidates are projected onto the surface; a projection onto another sheet (across a slit or
 // a thin wall) or too far from the target would take v off its own sheet.
 bool MoveSearch::try_point(Vec3 target) {
-  const SurfacePoint sp = c_.index.closest(target);
-  if (sp.face == kInvalidIndex || sp.distance > 0.5 * frame_.h) return false;
-  const Triangle& st = c_.surface.triangles[sp.face];
+  const ClosestPoint sp = c_.index.closest(target);
+  if (sp.point.element == kInvalidIndex || sp.distance > 0.5 * frame_.h) return false;
+  const Triangle& st = c_.surface.triangles[sp.point.element];
   const Vec3 sn = normal(c_.surface.positions[st[0]], c_.surface.positions[st[1]], c_.surface.positions[st[2]]);
   if (dot(sn, frame_.normal) <= 0.5 * norm(sn)) return false;   // another sheet
   const double q = signed_quality(c_, v_, sp.position, true, c_.surface_normal(sp));

@@ -25,9 +25,9 @@ struct Snapped {
 };
 
 Snapped snap(const TriangleMesh& mesh, Vec3 p, double& max_distance) {
-  const SurfacePoint s = closest_surface_point(mesh, p);
+  const ClosestPoint s = closest_surface_point(mesh, p);
   max_distance = std::max(max_distance, s.distance);
-  return {s.face, s.barycentric};
+  return {s.point.element, s.point.barycentric};
 }
 
 // The same surface point as weights of face g's corners, when it lies on g (on a shared edge

@@ -10,6 +10,7 @@
 #include <gsp/heuristic.hpp>
 #include <gsp/layout.hpp>
 #include <gsp/mesh.hpp>
+#include <gsp/surface_point.hpp>
 
 #include <array>
 #include <cstdint>
@@ -19,20 +20,18 @@
 
 namespace gsp {
 
-// A point source: a vertex, or a point inside a face given by barycentric coordinates
-// (weights of the face's corners 0, 1, 2; they must be >= 0 and sum to 1 within 1e-6).
-// `offset` is an initial distance added to everything the source reaches.
-struct Source {
-  enum class Kind : std::uint8_t { vertex, face_point };
-  Kind kind = Kind::vertex;
-  Index element = 0;                        // vertex index or face index (input order)
-  std::array<double, 3> barycentric{1, 0, 0};
+// A point source: a surface point (a vertex, or a point inside a face whose barycentric weights
+// must be >= 0 and sum to 1 within 1e-6: gsp::are_barycentric) and an initial distance `offset`
+// added to everything the source reaches. Built on gsp::SurfacePoint so that a source is any
+// surface point plus its offset: s.kind, s.element, s.barycentric are the point's.
+struct Source : SurfacePoint {
   double offset = 0;
 
-  static Source at_vertex(Index v, double offset = 0) { return {Kind::vertex, v, {1, 0, 0}, offset}; }
+  static Source at_vertex(Index v, double offset = 0) { return {SurfacePoint::at_vertex(v), offset}; }
   static Source in_face(Index f, std::array<double, 3> bary, double offset = 0) {
-    return {Kind::face_point, f, bary, offset};
+    return {SurfacePoint::in_face(f, bary), offset};
   }
+  static Source at(const SurfacePoint& p, double offset = 0) { return {p, offset}; }
 };
 
 // How the wavefront is scheduled (paper Section 4.2). All give the same distances up to the

@@ -18,7 +18,7 @@ class ClosestPointIndex {
   ClosestPointIndex(const ClosestPointIndex&) = delete;
   ClosestPointIndex& operator=(const ClosestPointIndex&) = delete;
 
-  SurfacePoint closest(Vec3 p) const;
+  ClosestPoint closest(Vec3 p) const;
 
  private:
   struct Impl;

@@ -1,0 +1,90 @@
+// gsp::SurfacePoint: positions of vertices and face points, the existence checks and their
+// messages, the barycentric test, and Source as a surface point with an offset.
+#include <gsp/closest_point.hpp>
+#include <gsp/errors.hpp>
+#include <gsp/geodesics.hpp>
+#include <gsp/surface_point.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace gsp {
+namespace {
+
+TriangleMesh two_triangles() {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {2, 2, 1}};
+  m.triangles = {{0, 1, 2}, {1, 3, 2}};
+  return m;
+}
+
+std::string message_of(const SurfacePoint& p, const TriangleMesh& m) {
+  try {
+    p.position(m);
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CoreSurfacePoint, PositionsOfVerticesAndFacePoints) {
+  const TriangleMesh m = two_triangles();
+  EXPECT_EQ(SurfacePoint::at_vertex(3).position(m), (Vec3{2, 2, 1}));
+  EXPECT_EQ(SurfacePoint::in_face(0, {0.5, 0.25, 0.25}).position(m), (Vec3{0.5, 0.5, 0}));
+  // Corner order of the face, not of the vertices: weight 1 on corner 1 of face 1 is vertex 3.
+  EXPECT_EQ(SurfacePoint::in_face(1, {0, 1, 0}).position(m), (Vec3{2, 2, 1}));
+  EXPECT_TRUE(SurfacePoint::at_vertex(0).is_vertex());
+  EXPECT_FALSE(SurfacePoint::in_face(0, {1, 0, 0}).is_vertex());
+}
+
+TEST(CoreSurfacePoint, MissingElementsAreNamed) {
+  const TriangleMesh m = two_triangles();
+  EXPECT_TRUE(SurfacePoint::at_vertex(3).exists_in(m));
+  EXPECT_FALSE(SurfacePoint::at_vertex(4).exists_in(m));
+  EXPECT_TRUE(SurfacePoint::in_face(1, {1, 0, 0}).exists_in(m));
+  EXPECT_FALSE(SurfacePoint::in_face(2, {1, 0, 0}).exists_in(m));
+  EXPECT_EQ(message_of(SurfacePoint::at_vertex(4), m), "vertex 4 does not exist (4 vertices)");
+  EXPECT_EQ(message_of(SurfacePoint::in_face(2, {1, 0, 0}), m), "face 2 does not exist (2 faces)");
+  EXPECT_EQ(message_of(SurfacePoint::in_face(kInvalidIndex, {1, 0, 0}), m),
+            "face 4294967295 does not exist (2 faces)");
+}
+
+TEST(CoreSurfacePoint, BarycentricWeights) {
+  EXPECT_TRUE(are_barycentric({1, 0, 0}));
+  EXPECT_TRUE(are_barycentric({0.2, 0.3, 0.5 + 5e-7}));
+  EXPECT_FALSE(are_barycentric({0.2, 0.3, 0.5 + 2e-6}));
+  EXPECT_FALSE(are_barycentric({-1e-12, 0.5, 0.5}));
+  EXPECT_FALSE(are_barycentric({std::nan(""), 0.5, 0.5}));
+}
+
+TEST(CoreSurfacePoint, SourceIsAPointWithAnOffset) {
+  const Source v = Source::at_vertex(7, 1.5);
+  EXPECT_EQ(v.kind, Source::Kind::vertex);
+  EXPECT_EQ(v.element, 7u);
+  EXPECT_EQ(v.offset, 1.5);
+  const Source f = Source::in_face(2, {0.2, 0.3, 0.5});
+  EXPECT_EQ(f.kind, SurfacePoint::Kind::face_point);
+  EXPECT_EQ(f.barycentric, (std::array<double, 3>{0.2, 0.3, 0.5}));
+  EXPECT_EQ(f.offset, 0.0);
+  const Source s = Source::at(SurfacePoint::in_face(1, {0, 0, 1}), 2);
+  EXPECT_EQ(s.element, 1u);
+  EXPECT_EQ(s.offset, 2.0);
+  const Source d;   // vertex 0, as Source always defaulted to
+  EXPECT_TRUE(d.is_vertex());
+  EXPECT_EQ(d.element, 0u);
+}
+
+TEST(CoreSurfacePoint, ClosestPointIsAFacePoint) {
+  const TriangleMesh m = two_triangles();
+  const ClosestPoint c = closest_surface_point(m, {0.25, 0.25, 1});
+  EXPECT_FALSE(c.point.is_vertex());
+  EXPECT_EQ(c.point.element, 0u);
+  EXPECT_NEAR(c.distance, 1.0, 1e-12);
+  // The same arithmetic as the query's own position: equal to the bit.
+  EXPECT_EQ(c.point.position(m), c.position);
+}
+
+}  // namespace
+}  // namespace gsp
