@@ -120,9 +120,9 @@ TEST(PathExact, BothEndsFacePoints) {
     for (std::size_t k = 0; k < ends.size(); ++k) {
       const pathfinding::GeodesicPath& p = r.paths[k];
       expect_valid_path(m, p);
-      EXPECT_EQ(distance(p.points.front().position, pathfinding::endpoint_position(m, from)), 0.0);
-      EXPECT_EQ(distance(p.points.back().position, pathfinding::endpoint_position(m, ends[k])), 0.0);
-      const double ex = exact.distance_to_point(ends[k].face, ends[k].barycentric);
+      EXPECT_EQ(distance(p.points.front().position, from.position(m)), 0.0);
+      EXPECT_EQ(distance(p.points.back().position, ends[k].position(m)), 0.0);
+      const double ex = exact.distance_to_point(ends[k].element, ends[k].barycentric);
       EXPECT_GT(p.length, ex * (1 - 1e-6));
       EXPECT_LT(p.length, ex * 1.005);
     }

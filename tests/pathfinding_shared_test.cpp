@@ -134,11 +134,11 @@ TEST(PathShared, CadNeedlesGiveSurfacePathsNearExact) {
       for (std::size_t k = 0; k < ends.size(); ++k) {
         const auto& p = r.paths[k];
         ASSERT_TRUE(p.found());
-        const double e = ex[ends[k].vertex];
-        EXPECT_GE(p.length, e * (1 - 1e-6)) << "end " << ends[k].vertex;   // a surface path is never shorter
-        EXPECT_LE(p.length, e * 1.005) << "end " << ends[k].vertex;
+        const double e = ex[ends[k].element];
+        EXPECT_GE(p.length, e * (1 - 1e-6)) << "end " << ends[k].element;   // a surface path is never shorter
+        EXPECT_LE(p.length, e * 1.005) << "end " << ends[k].element;
         EXPECT_EQ(distance(p.points.front().position, m.positions[s]), 0.0);
-        EXPECT_EQ(distance(p.points.back().position, m.positions[ends[k].vertex]), 0.0);
+        EXPECT_EQ(distance(p.points.back().position, m.positions[ends[k].element]), 0.0);
       }
     }
   }

@@ -28,15 +28,13 @@ inline void expect_valid_path(const TriangleMesh& m, const pathfinding::Geodesic
   double length = 0;
   for (std::size_t i = 0; i < p.points.size(); ++i) {
     const pathfinding::PathPoint& q = p.points[i];
-    ASSERT_LT(q.face, m.num_faces());
-    const Triangle& t = m.triangles[q.face];
-    const Vec3 at = q.barycentric[0] * m.positions[t[0]] + q.barycentric[1] * m.positions[t[1]] +
-                    q.barycentric[2] * m.positions[t[2]];
-    EXPECT_LT(distance(at, q.position), 1e-5) << "point " << i << " is not where its barycentrics say";
-    EXPECT_TRUE(on_face(m, q.face, q.position, 1e-6)) << "point " << i << " is off its face";
+    ASSERT_FALSE(q.point.is_vertex());
+    ASSERT_LT(q.point.element, m.num_faces());
+    EXPECT_LT(distance(q.point.position(m), q.position), 1e-5) << "point " << i << " is not where its barycentrics say";
+    EXPECT_TRUE(on_face(m, q.point.element, q.position, 1e-6)) << "point " << i << " is off its face";
     if (i == 0) continue;
     const pathfinding::PathPoint& r = p.points[i - 1];
-    const bool shared = (on_face(m, q.face, r.position, 1e-5)) || on_face(m, r.face, q.position, 1e-5);
+    const bool shared = on_face(m, q.point.element, r.position, 1e-5) || on_face(m, r.point.element, q.position, 1e-5);
     EXPECT_TRUE(shared) << "points " << i - 1 << " and " << i << " share no face";
     length += distance(q.position, r.position);
   }

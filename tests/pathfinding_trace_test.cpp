@@ -39,7 +39,7 @@ TEST(PathTrace, FlatGridsGiveStraightSegments) {
       for (const Endpoint& e : {Endpoint::at_vertex(t), Endpoint::in_face(f, {0.2, 0.3, 0.5})}) {
         const auto path = tracer.trace(field, e);
         expect_valid_path(m, path);
-        const Vec3 end = pathfinding::endpoint_position(m, e);
+        const Vec3 end = e.position(m);
         const double straight = distance(m.positions[s], end);
         EXPECT_NEAR(path.length, straight, 1e-5) << "variant " << variant << " trial " << trial;
         EXPECT_LT(distance(path.points.front().position, m.positions[s]), 1e-6);
@@ -59,7 +59,7 @@ TEST(PathTrace, FlatGridsGiveStraightSegments) {
 TEST(PathTrace, SourceInsideAFace) {
   const TriangleMesh m = jittered_grid(12, 0.2, 3);
   const Source s = Source::in_face(40, {0.1, 0.6, 0.3});
-  const Vec3 sp = pathfinding::endpoint_position(m, Endpoint::in_face(40, {0.1, 0.6, 0.3}));
+  const Vec3 sp = Endpoint::in_face(40, {0.1, 0.6, 0.3}).position(m);
   const GeodesicResult field = field_from(m, s);
   const auto path = PathTracer(m).trace(field, Endpoint::at_vertex(0));
   expect_valid_path(m, path);
@@ -149,7 +149,7 @@ TEST(PathTrace, InconsistentFieldFailsClearly) {
   const Endpoint end = Endpoint::in_face(0, {0.2, 0.4, 0.4});
   const auto path = PathTracer(m, o).trace(field, end);
   expect_valid_path(m, path);
-  EXPECT_NEAR(path.length, distance(m.positions[0], pathfinding::endpoint_position(m, end)), 1e-12);
+  EXPECT_NEAR(path.length, distance(m.positions[0], end.position(m)), 1e-12);
   for (double& d : field.vertex_distance) d = 1;   // no vertex is a source any more
   EXPECT_THROW(PathTracer(m, o).trace(field, end), Error);
 }
@@ -207,7 +207,7 @@ TEST(PathQuery, MethodsAgreeAndEdgePathsAreLonger) {
     EXPECT_NEAR(settle.paths[k].length, full.paths[k].length, 1e-3 * full.paths[k].length);
     EXPECT_GT(edges.paths[k].length, full.paths[k].length);
     for (std::size_t i = 1; i + 1 < edges.paths[k].points.size(); ++i) {
-      const auto& b = edges.paths[k].points[i].barycentric;
+      const auto& b = edges.paths[k].points[i].point.barycentric;
       EXPECT_NEAR(std::max({b[0], b[1], b[2]}), 1.0, 1e-12) << "edge-path point " << i << " is not a vertex";
     }
   }

@@ -25,8 +25,8 @@ Path to_path(const pathfinding::GeodesicPath& p) {
   std::vector<Index> faces;
   for (const pathfinding::PathPoint& q : p.points) {
     points.push_back(q.position);
-    bary.push_back(q.barycentric);
-    faces.push_back(q.face);
+    bary.push_back(q.point.barycentric);
+    faces.push_back(q.point.element);
   }
   return {to_array(std::move(points)), to_array(std::move(bary)), labels_to_array(faces), p.length};
 }
@@ -54,15 +54,14 @@ std::vector<Path> trace(Solver& s, const py::handle& a, const py::handle& ends, 
   o.method = method_from(method);
   o.both_ends = both_ends;
   o.precision = precision_from(precision);
-  std::vector<pathfinding::Endpoint> targets;
-  for (const Source& t : to) targets.push_back(endpoint_from(t));
+  const std::vector<pathfinding::Endpoint> targets(to.begin(), to.end());   // the sources' points
   pathfinding::PathQueryResult r;
   {
     py::gil_scoped_release nogil;
     const pathfinding::PathTracer& tracer = s.tracer();
     r = o.method == pathfinding::PathMethod::dijkstra_edges
-            ? pathfinding::edge_paths(s.mesh(), tracer, endpoint_from(from), targets)
-            : pathfinding::shortest_paths(s.solver(), tracer, endpoint_from(from), targets, o);
+            ? pathfinding::edge_paths(s.mesh(), tracer, from, targets)
+            : pathfinding::shortest_paths(s.solver(), tracer, from, targets, o);
   }
   std::vector<Path> out;
   for (std::size_t i = 0; i < r.paths.size(); ++i) {

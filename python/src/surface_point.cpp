@@ -74,9 +74,4 @@ std::vector<Source> sources_from(const py::handle& h, const TriangleMesh& mesh, 
   return out;
 }
 
-pathfinding::Endpoint endpoint_from(const Source& s) {
-  return s.kind == Source::Kind::vertex ? pathfinding::Endpoint::at_vertex(s.element)
-                                        : pathfinding::Endpoint::in_face(s.element, s.barycentric);
-}
-
 }  // namespace gsp::python

@@ -2,7 +2,6 @@
 // gsp.SurfacePoint(face, (b0, b1, b2)) and the conversion of "sources" / "end points"
 // arguments: a vertex index, a SurfacePoint, or a list / 1-D array mixing them.
 #include <gsp/geodesics.hpp>
-#include <gsp/pathfinding/path.hpp>
 
 #include <pybind11/pybind11.h>
 
@@ -25,7 +24,5 @@ bool is_index(const pybind11::handle& h);
 Source source_from(const pybind11::handle& h, const TriangleMesh& mesh, const char* what);
 // One point or a list / array of them (an empty list is an error).
 std::vector<Source> sources_from(const pybind11::handle& h, const TriangleMesh& mesh, const char* what);
-
-pathfinding::Endpoint endpoint_from(const Source& s);
 
 }  // namespace gsp::python

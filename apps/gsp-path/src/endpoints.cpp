@@ -27,7 +27,8 @@ ResolvedEndpoint resolve_endpoint(const std::string& text, const std::string& op
     if (v.size() != 1) throw cli::UsageError(option + ": \"" + text + "\": one vertex index, x,y,z or F:u,v");
     r.endpoint = pathfinding::Endpoint::at_vertex(in.mesh_vertex(v[0]));
   }
-  r.position = pathfinding::endpoint_position(mesh, r.endpoint);
+  pathfinding::check_endpoint(mesh, r.endpoint);
+  r.position = r.endpoint.position(mesh);
   return r;
 }
 

@@ -28,8 +28,8 @@ void write_json(const std::string& path, const std::vector<pathfinding::Geodesic
       cli::Json& pts = j["points"] = cli::Json::array();
       for (const pathfinding::PathPoint& q : p.points) {
         cli::Json point = cli::Json::object();
-        point["face"] = q.face;
-        point["barycentric"] = cli::Json::array_of(q.barycentric);
+        point["face"] = q.point.element;
+        point["barycentric"] = cli::Json::array_of(q.point.barycentric);
         point["position"] = cli::Json::array_of(std::vector<double>{q.position.x, q.position.y, q.position.z});
         pts.push_back(std::move(point));
       }

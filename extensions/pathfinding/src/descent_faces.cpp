@@ -29,7 +29,7 @@ Index edge_face(const TriangleMesh& mesh, const Connectivity& conn, Index u, Ind
 // `stop_face` (or, with kInvalidIndex, where no neighbour is lower); empty when stuck.
 std::vector<Index> descend(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
                            const PathPoint& end, Index stop_face) {
-  const Triangle& te = mesh.triangles[end.face];
+  const Triangle& te = mesh.triangles[end.point.element];
   Index u = kInvalidIndex;
   double best = std::numeric_limits<double>::infinity();
   for (Index v : te)
@@ -77,11 +77,10 @@ std::vector<PathPoint> edge_route(const TriangleMesh& mesh, const std::vector<In
   };
   for (std::size_t i = 0; i < chain.size(); ++i) {
     PathPoint q;
-    q.face = faces[i];   // start's face for the bottom vertex, then the edge's face
+    q.point = SurfacePoint::in_face(faces[i], {0, 0, 0});   // start's face for the bottom vertex, then the edge's face
     q.position = mesh.positions[chain[i]];
-    q.barycentric = {0, 0, 0};
     for (int c = 0; c < 3; ++c)
-      if (mesh.triangles[q.face][c] == chain[i]) q.barycentric[c] = 1;
+      if (mesh.triangles[faces[i]][c] == chain[i]) q.point.barycentric[c] = 1;
     push(q);
   }
   push(end);
@@ -97,10 +96,9 @@ PathPoint vertex_start(const TriangleMesh& mesh, const Connectivity& conn, Index
     const Index f = face_of(c);
     const Triangle& t = mesh.triangles[f];
     scale = std::max(scale, distance(mesh.positions[t[0]], mesh.positions[t[1]]));
-    if (start.face == kInvalidIndex) {
-      start.face = f;
-      start.barycentric = {0, 0, 0};
-      start.barycentric[corner_of(c)] = 1;
+    if (start.point.element == kInvalidIndex) {
+      start.point = SurfacePoint::in_face(f, {0, 0, 0});
+      start.point.barycentric[corner_of(c)] = 1;
       start.position = mesh.positions[u];
     }
   }
@@ -124,8 +122,7 @@ bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const
     if (!(den > 0)) continue;
     const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den, b0 = 1 - b1 - b2;
     if (std::min({b0, b1, b2}) < -1e-6 || distance(vs.position, mesh.positions[u]) <= 1e-9 * (1 + scale)) continue;
-    start.face = f;
-    start.barycentric = {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)};
+    start.point = SurfacePoint::in_face(f, {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)});
     start.position = vs.position;
     return true;
   }
@@ -136,15 +133,16 @@ bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const
 
 std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
                                  const PathPoint& start, const PathPoint& end) {
-  if (d.size() != mesh.num_vertices() || start.face >= mesh.num_faces() || end.face >= mesh.num_faces()) return {};
-  const std::vector<Index> chain = descend(mesh, conn, d, end, start.face);
-  return chain.empty() ? chain : chain_faces(mesh, conn, chain, start.face, end.face);
+  const Index start_face = start.point.element, end_face = end.point.element;
+  if (d.size() != mesh.num_vertices() || start_face >= mesh.num_faces() || end_face >= mesh.num_faces()) return {};
+  const std::vector<Index> chain = descend(mesh, conn, d, end, start_face);
+  return chain.empty() ? chain : chain_faces(mesh, conn, chain, start_face, end_face);
 }
 
 bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
                   const PathPoint& end, GeodesicPath& out) {
   const std::vector<double>& d = field.vertex_distance;
-  if (d.size() != mesh.num_vertices() || end.face >= mesh.num_faces()) return false;
+  if (d.size() != mesh.num_vertices() || end.point.element >= mesh.num_faces()) return false;
   const std::vector<Index> chain = descend(mesh, conn, d, end, kInvalidIndex);
   if (chain.empty()) return false;
   const Index u = chain.front();
@@ -152,19 +150,20 @@ bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const Geod
   // 0 (a point source in a face), else u itself (a vertex source).
   double scale = 0;
   PathPoint start = vertex_start(mesh, conn, u, scale);
-  if (start.face == kInvalidIndex) return false;
+  if (start.point.element == kInvalidIndex) return false;
   const bool found_face_source = face_source_start(mesh, conn, field, u, scale, start);
   // Neither a point source in a face round u nor a source at u (distance 0 there): the field
   // bottoms out somewhere else than at a source, and this route cannot be trusted (a vertex
   // source with an initial offset lands here too: the walk handles those).
   if (!found_face_source && !(d[u] <= 0)) return false;
-  const std::vector<Index> faces = chain_faces(mesh, conn, chain, start.face, end.face);
+  const std::vector<Index> faces = chain_faces(mesh, conn, chain, start.point.element, end.point.element);
   if (faces.empty()) return false;
   // No sleeve through these faces (a vertex whose fan the walk round it cannot follow: a
   // non-manifold vertex, seams left open): the edge route as it is, a true surface path.
   if (!shorten_in_sleeve(mesh, conn, start, end, faces, out.points)) out.points = edge_route(mesh, chain, faces, start, end);
   out.length = polyline_length(out.points);
-  out.source = field.face_sources.size() > start.face ? field.face_sources[start.face].source : kInvalidIndex;
+  const Index start_face = start.point.element;
+  out.source = field.face_sources.size() > start_face ? field.face_sources[start_face].source : kInvalidIndex;
   if (out.source == kInvalidIndex && u < field.vertex_source.size()) out.source = field.vertex_source[u];
   return true;
 }

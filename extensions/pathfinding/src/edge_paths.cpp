@@ -21,10 +21,9 @@ PathPoint vertex_point(const TriangleMesh& mesh, const Connectivity& conn, Index
     const Index c = conn.vertex_corners[k];
     const Triangle& t = mesh.triangles[face_of(c)];
     const bool shares = other == kInvalidIndex || t[0] == other || t[1] == other || t[2] == other;
-    if (p.face == kInvalidIndex || shares) {
-      p.face = face_of(c);
-      p.barycentric = {0, 0, 0};
-      p.barycentric[corner_of(c)] = 1;
+    if (p.point.element == kInvalidIndex || shares) {
+      p.point = SurfacePoint::in_face(face_of(c), {0, 0, 0});
+      p.point.barycentric[corner_of(c)] = 1;
       if (shares) break;
     }
   }
@@ -36,27 +35,27 @@ GeodesicPath backtrack(const TriangleMesh& mesh, const Connectivity& conn, const
   GeodesicPath path;
   Index u = kInvalidIndex;
   if (end.is_vertex()) {
-    u = end.vertex;
+    u = end.element;
     path.field_distance = d[u];
     path.points.push_back(vertex_point(mesh, conn, u, kInvalidIndex));
   } else {
-    const Triangle& t = mesh.triangles[end.face];
-    const Vec3 p = endpoint_position(mesh, end);
+    const Triangle& t = mesh.triangles[end.element];
+    const Vec3 p = end.position(mesh);
     double best = std::numeric_limits<double>::infinity();
     for (Index v : t)
       if (d[v] + distance(mesh.positions[v], p) < best) best = d[v] + distance(mesh.positions[v], p), u = v;
     path.field_distance = best;
-    path.points.push_back({end.face, end.barycentric, p});
+    path.points.push_back({end, p});
     if (std::isfinite(best)) path.points.push_back(vertex_point(mesh, conn, u, t[0] == u ? t[1] : t[0]));
   }
   if (!std::isfinite(path.field_distance)) return {};
   for (std::size_t steps = 0; steps <= mesh.num_vertices(); ++steps) {
-    if (from.is_vertex() && u == from.vertex) break;
+    if (from.is_vertex() && u == from.element) break;
     if (!from.is_vertex()) {
-      const Triangle& t = mesh.triangles[from.face];
+      const Triangle& t = mesh.triangles[from.element];
       const bool corner = t[0] == u || t[1] == u || t[2] == u;
       if (corner && std::abs(d[u] - distance(mesh.positions[u], from_pos)) <= 1e-12 * (1 + d[u])) {
-        path.points.push_back({from.face, from.barycentric, from_pos});
+        path.points.push_back({from, from_pos});
         break;
       }
     }
@@ -82,13 +81,13 @@ GeodesicPath backtrack(const TriangleMesh& mesh, const Connectivity& conn, const
 
 PathQueryResult edge_paths(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
                            const std::vector<Endpoint>& to) {
-  const Vec3 from_pos = endpoint_position(mesh, from);
-  for (const Endpoint& e : to) endpoint_position(mesh, e);
+  check_endpoint(mesh, from);
+  const Vec3 from_pos = from.position(mesh);
+  for (const Endpoint& e : to) check_endpoint(mesh, e);
   PathQueryResult r;
   auto t0 = Clock::now();
   const DijkstraSolver solver(mesh);
-  const Source s = from.is_vertex() ? Source::at_vertex(from.vertex) : Source::in_face(from.face, from.barycentric);
-  const GeodesicResult field = solver.compute({s});
+  const GeodesicResult field = solver.compute({Source::at(from)});
   r.compute_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   r.stats = field.stats;
   t0 = Clock::now();

@@ -23,7 +23,7 @@ PathTracer::PathTracer(const TriangleMesh& mesh, const TraceOptions& options)
 GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end) const {
   if (field.face_sources.size() != mesh_.num_faces())
     throw InvalidInput("path tracing needs a field computed with want_face_sources on this mesh");
-  endpoint_position(mesh_, end);   // validates
+  check_endpoint(mesh_, end);
   const std::size_t max_steps = options_.max_steps ? options_.max_steps : 2 * mesh_.num_faces() + 64;
   try {
     return detail::Walk(mesh_, conn_, field, mean_edge_, max_steps, options_.shorten).run(end);
@@ -33,17 +33,16 @@ GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end)
     // The walk could not be completed (a cycle in an inconsistent field, a step off the
     // boundary): the route down the field's vertex distances, pulled taut, is the path.
     PathPoint last;
-    last.position = endpoint_position(mesh_, end);
+    last.position = end.position(mesh_);
     if (end.is_vertex()) {
-      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[end.vertex]];
-      last.face = face_of(c);
-      last.barycentric = detail::corner_bary(corner_of(c));
+      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[end.element]];
+      last.point = SurfacePoint::in_face(face_of(c), detail::corner_bary(corner_of(c)));
     } else {
-      last.face = end.face, last.barycentric = end.barycentric;
+      last.point = end;
     }
     GeodesicPath path;
     if (!options_.shorten || !detail::descent_path(mesh_, conn_, field, last, path)) throw;
-    path.field_distance = end.is_vertex() ? field.vertex_distance[end.vertex] : field.distance_at(mesh_, end.face, end.barycentric);
+    path.field_distance = end.is_vertex() ? field.vertex_distance[end.element] : field.distance_at(mesh_, end.element, end.barycentric);
     return path;
   }
 }

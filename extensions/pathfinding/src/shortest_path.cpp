@@ -14,10 +14,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-Source to_source(const Endpoint& e) {
-  return e.is_vertex() ? Source::at_vertex(e.vertex) : Source::in_face(e.face, e.barycentric);
-}
-
 // The propagation's options for paths to `to`: vertices as they are; a point inside a face is
 // settled once its face's corners are.
 GeodesicOptions field_options(const TriangleMesh& mesh, const std::vector<Endpoint>& to, const PathQueryOptions& options) {
@@ -26,11 +22,11 @@ GeodesicOptions field_options(const TriangleMesh& mesh, const std::vector<Endpoi
   go.precision = options.precision;
   if (options.method != PathMethod::full) {
     for (const Endpoint& e : to) {
-      endpoint_position(mesh, e);   // validates before indexing
+      check_endpoint(mesh, e);   // before indexing
       if (e.is_vertex()) {
-        go.targets.push_back(e.vertex);
+        go.targets.push_back(e.element);
       } else {
-        const Triangle& t = mesh.triangles[e.face];
+        const Triangle& t = mesh.triangles[e.element];
         go.targets.insert(go.targets.end(), t.begin(), t.end());
       }
     }
@@ -61,8 +57,8 @@ std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
 std::vector<PathPoint> reversed(const TriangleMesh& mesh, const std::vector<PathPoint>& back) {
   std::vector<PathPoint> out(back.rbegin(), back.rend());
   for (std::size_t j = out.size(); j-- > 1;) {
-    out[j].face = out[j - 1].face;
-    out[j].barycentric = weights_in(mesh, out[j].face, out[j].position);
+    const Index f = out[j - 1].point.element;
+    out[j].point = SurfacePoint::in_face(f, weights_in(mesh, f, out[j].position));
   }
   return out;
 }
@@ -72,17 +68,17 @@ std::vector<PathPoint> reversed(const TriangleMesh& mesh, const std::vector<Path
 void snap_start(const TriangleMesh& mesh, std::vector<PathPoint>& points, const Endpoint& source) {
   if (points.empty()) return;
   PathPoint& p = points.front();
-  const Vec3 exact = endpoint_position(mesh, source);
-  const Triangle& t = mesh.triangles[p.face];
+  const Vec3 exact = source.position(mesh);
+  const Triangle& t = mesh.triangles[p.point.element];
   const double scale = distance(mesh.positions[t[0]], mesh.positions[t[1]]) + distance(mesh.positions[t[1]], mesh.positions[t[2]]);
   if (!(distance(p.position, exact) <= 1e-4 * scale)) return;
   p.position = exact;
-  p.barycentric = weights_in(mesh, p.face, exact);
+  p.point.barycentric = weights_in(mesh, p.point.element, exact);
 }
 
 double field_at(const TriangleMesh& mesh, const GeodesicResult& field, const Endpoint& e) {
-  if (e.is_vertex()) return field.vertex_distance[e.vertex];
-  return field.distance_at(mesh, e.face, e.barycentric);
+  if (e.is_vertex()) return field.vertex_distance[e.element];
+  return field.distance_at(mesh, e.element, e.barycentric);
 }
 
 // A polyline on the surface from a to b: it starts and ends there and each segment lies in a
@@ -105,7 +101,8 @@ bool on_surface(const TriangleMesh& mesh, const std::vector<PathPoint>& points, 
   if (distance(points.front().position, a) > tolerance || distance(points.back().position, b) > tolerance) return false;
   for (std::size_t i = 1; i < points.size(); ++i) {
     const Vec3 q0 = points[i - 1].position, q1 = points[i].position;
-    if (!on_face(mesh, points[i].face, q0, q1, tolerance) && !on_face(mesh, points[i - 1].face, q0, q1, tolerance))
+    if (!on_face(mesh, points[i].point.element, q0, q1, tolerance) &&
+        !on_face(mesh, points[i - 1].point.element, q0, q1, tolerance))
       return false;
   }
   return true;
@@ -184,7 +181,7 @@ void trace_forward(Query& q, PathQueryResult& r) {
       r.paths[k] = q.tracer.trace(q.field, q.to[k]);
       snap_start(q.mesh, r.paths[k].points, q.from);
       r.paths[k].length = polyline_length(r.paths[k].points);
-      if (!on_surface(q.mesh, r.paths[k].points, q.from_pos, endpoint_position(q.mesh, q.to[k]), q.tolerance))
+      if (!on_surface(q.mesh, r.paths[k].points, q.from_pos, q.to[k].position(q.mesh), q.tolerance))
         q.invalid[k] = true;
     } catch (const NoPath&) {
       // unreachable: an empty path
@@ -201,7 +198,7 @@ void trace_back(Query& q, const GeodesicOptions& back_options, std::size_t k, Pa
   GeodesicPath& path = r.paths[k];
   if (!q.failed[k] && !q.invalid[k] && (!path.found() || !(path.length > 0))) return;
   auto t0 = Clock::now();
-  const GeodesicResult back_field = q.solver.compute({to_source(q.to[k])}, back_options);
+  const GeodesicResult back_field = q.solver.compute({Source::at(q.to[k])}, back_options);
   r.compute_seconds += seconds_since(t0);
   add_stats(r.reverse_stats, back_field.stats);
   t0 = Clock::now();
@@ -209,7 +206,7 @@ void trace_back(Query& q, const GeodesicOptions& back_options, std::size_t k, Pa
     GeodesicPath back = q.tracer.trace(back_field, q.from);
     snap_start(q.mesh, back.points, q.to[k]);
     const bool back_valid =
-        back.found() && on_surface(q.mesh, back.points, endpoint_position(q.mesh, q.to[k]), q.from_pos, q.tolerance);
+        back.found() && on_surface(q.mesh, back.points, q.to[k].position(q.mesh), q.from_pos, q.tolerance);
     if (back_valid && (q.failed[k] || q.invalid[k] || polyline_length(back.points) < path.length)) {
       if (q.failed[k] || q.invalid[k]) path.field_distance = field_at(q.mesh, q.field, q.to[k]);
       path.points = reversed(q.mesh, back.points);
@@ -234,11 +231,11 @@ PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& t
   const GeodesicOptions go = field_options(mesh, to, options);
   PathQueryResult r;
   auto t0 = Clock::now();
-  const GeodesicResult field = solver.compute({to_source(from)}, go);
+  const GeodesicResult field = solver.compute({Source::at(from)}, go);
   r.compute_seconds = seconds_since(t0);
   r.stats = field.stats;
   t0 = Clock::now();
-  Query q{solver, tracer, mesh, from, to, field, 1e-6 * bounding_box(mesh).diagonal(), endpoint_position(mesh, from),
+  Query q{solver, tracer, mesh, from, to, field, 1e-6 * bounding_box(mesh).diagonal(), from.position(mesh),
           std::vector<std::exception_ptr>(to.size()), std::vector<bool>(to.size(), false)};
   trace_forward(q, r);
   r.trace_seconds = seconds_since(t0);

@@ -29,11 +29,11 @@ namespace {
 
 End end_of(const TriangleMesh& mesh, const PathPoint& p) {
   End e;
-  std::array<double, 3> b = p.barycentric;
+  std::array<double, 3> b = p.point.barycentric;
   for (double& x : b) x = std::max(0.0, x);
   const double sum = b[0] + b[1] + b[2];
   for (int i = 0; i < 3; ++i)
-    if (b[i] > 1e-9 * sum) e.vertex[e.n] = mesh.triangles[p.face][i], e.weight[e.n++] = b[i] / sum;
+    if (b[i] > 1e-9 * sum) e.vertex[e.n] = mesh.triangles[p.point.element][i], e.weight[e.n++] = b[i] / sum;
   return e;
 }
 

@@ -137,12 +137,9 @@ void Shortener::emit(std::vector<PathPoint>& out) {
 // holds the segment ending there.
 PathPoint Shortener::bary_point(Index f, const End& e) const {
   PathPoint q;
-  q.face = f;
-  q.barycentric = {0, 0, 0};
-  for (int i = 0; i < e.n; ++i) q.barycentric[corner_at(f, e.vertex[i])] += e.weight[i];
-  const Triangle& t = mesh_.triangles[f];
-  q.position = q.barycentric[0] * mesh_.positions[t[0]] + q.barycentric[1] * mesh_.positions[t[1]] +
-               q.barycentric[2] * mesh_.positions[t[2]];
+  q.point = SurfacePoint::in_face(f, {0, 0, 0});
+  for (int i = 0; i < e.n; ++i) q.point.barycentric[corner_at(f, e.vertex[i])] += e.weight[i];
+  q.position = q.point.position(mesh_);
   return q;
 }
 

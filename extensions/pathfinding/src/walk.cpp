@@ -44,34 +44,34 @@ GeodesicPath Walk::run(const Endpoint& end) {
 Walker Walk::start(const Endpoint& end) {
   Walker w;
   if (end.is_vertex()) {
-    w.position = mesh_.positions[end.vertex];
-    if (step_vertex(end.vertex, w) == VertexStep::source) {
+    w.position = mesh_.positions[end.element];
+    if (step_vertex(end.element, w) == VertexStep::source) {
       // Zero-length path: the end point is the source.
-      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[end.vertex]];
+      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[end.element]];
       w.face = face_of(c);
       w.bary = corner_bary(corner_of(c));
     }
     return w;
   }
-  w.face = end.face;
+  w.face = end.element;
   w.bary = end.barycentric;
-  w.position = point(end.face, end.barycentric);
-  if (!reached(end.face)) throw NoPath("face " + std::to_string(end.face) + " is not reached by the field");
+  w.position = end.position(mesh_);
+  if (!reached(w.face)) throw NoPath("face " + std::to_string(w.face) + " is not reached by the field");
   adopt_own(w);
   Bary unused;
-  if (!bary_of(end.face, w.position, unused)) {
+  if (!bary_of(end.element, w.position, unused)) {
     const Index corner = Index(std::max_element(w.bary.begin(), w.bary.end()) - w.bary.begin());
     emit(w);
     w.face = kInvalidIndex;
-    step_vertex(mesh_.triangles[end.face][corner], w);
+    step_vertex(mesh_.triangles[end.element][corner], w);
   }
   return w;
 }
 
 // The field's own distance at the end, reported beside the path's length to measure it by.
 double Walk::end_distance(const Endpoint& end) const {
-  if (!end.is_vertex()) return field_.distance_at(mesh_, end.face, end.barycentric);
-  return field_.vertex_distance.size() > end.vertex ? field_.vertex_distance[end.vertex] : kInf;
+  if (!end.is_vertex()) return field_.distance_at(mesh_, end.element, end.barycentric);
+  return field_.vertex_distance.size() > end.element ? field_.vertex_distance[end.element] : kInf;
 }
 
 // Every arrival at a vertex ends the walk there when v is the source, and fails the trace when
@@ -105,7 +105,7 @@ void Walk::step(Walker& w) {
   const int top = int(std::max_element(bq.begin(), bq.end()) - bq.begin());
   Walker next = w;
   next.bary = bq;
-  next.position = point(w.face, bq);
+  next.position = SurfacePoint::in_face(w.face, bq).position(mesh_);
   if (exit_corner < 0) {
     reach_target(w, next, top);
     return;
@@ -173,7 +173,7 @@ void Walk::leave_face(Walker& w, const Walker& next, int exit_corner) {
 void Walk::pull_taut() {
   std::vector<PathPoint> taut;
   std::vector<Index> segment_faces;   // walk order: each point's face holds the segment to it
-  for (std::size_t k = out_.points.size(); k-- > 1;) segment_faces.push_back(out_.points[k].face);
+  for (std::size_t k = out_.points.size(); k-- > 1;) segment_faces.push_back(out_.points[k].point.element);
   const PathPoint first = out_.points.back(), last = out_.points.front();
   if (shorten_ && shorten_in_sleeve(mesh_, conn_, first, last, segment_faces, taut)) {
     keep_shortest(taut, first, last);

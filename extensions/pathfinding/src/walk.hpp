@@ -80,10 +80,6 @@ class Walk {
     const VirtualSource& s = field_.face_sources[f];
     return s.sigma + distance(x, s.position);
   }
-  Vec3 point(Index f, const Bary& b) const {
-    const Triangle& t = mesh_.triangles[f];
-    return b[0] * mesh_.positions[t[0]] + b[1] * mesh_.positions[t[1]] + b[2] * mesh_.positions[t[2]];
-  }
   void adopt_own(Walker& w) const {
     const VirtualSource& s = field_.face_sources[w.face];
     w.target = s.position, w.sigma = s.sigma, w.label = s.source, w.own = true;
@@ -91,7 +87,7 @@ class Walk {
   // Appends w's point; its face is the one the segment from the previous point lies in.
   void emit(const Walker& w) {
     if (!out_.points.empty() && distance(out_.points.back().position, w.position) <= eps_) return;
-    out_.points.push_back({w.face, w.bary, w.position});
+    out_.points.push_back({SurfacePoint::in_face(w.face, w.bary), w.position});
   }
 
   // The moves (walk_moves.cpp).

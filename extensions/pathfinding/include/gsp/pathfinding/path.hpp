@@ -2,6 +2,7 @@
 // Geodesic paths as surface polylines, and where they start and end.
 #include <gsp/errors.hpp>
 #include <gsp/mesh.hpp>
+#include <gsp/surface_point.hpp>
 
 #include <array>
 #include <limits>
@@ -9,23 +10,15 @@
 
 namespace gsp::pathfinding {
 
-// A point of the surface: a vertex, or a point inside a face (barycentric weights of the
-// face's corners 0, 1, 2, >= 0, summing to 1).
-struct Endpoint {
-  Index vertex = kInvalidIndex;
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{1, 0, 0};
+// Where a path starts or ends: any surface point (a vertex, or a point inside a face whose
+// barycentric weights are >= 0 and sum to 1: gsp::are_barycentric).
+using Endpoint = SurfacePoint;
 
-  static Endpoint at_vertex(Index v) { return {v, kInvalidIndex, {1, 0, 0}}; }
-  static Endpoint in_face(Index f, std::array<double, 3> bary) { return {kInvalidIndex, f, bary}; }
-  bool is_vertex() const { return vertex != kInvalidIndex; }
-};
-
-// One point of a path: on face `face` at `barycentric`, i.e. at `position` in 3D. Consecutive
-// points of a path share a face, so the segment between them lies on the surface.
+// One point of a path: `point`, always a face point (a vertex is named as a corner of one of
+// its faces; face kInvalidIndex until placed), is at `position` in 3D. Consecutive points of a
+// path share a face, so the segment between them lies on the surface.
 struct PathPoint {
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{1, 0, 0};
+  SurfacePoint point = SurfacePoint::in_face(kInvalidIndex, {1, 0, 0});
   Vec3 position;
 };
 
@@ -43,8 +36,9 @@ struct NoPath : Error {
   using Error::Error;
 };
 
-// 3D position of an endpoint; throws InvalidInput when it names a missing vertex or face.
-Vec3 endpoint_position(const TriangleMesh& mesh, const Endpoint& end);
+// Throws InvalidInput when `end` names a missing vertex or face, or a face point's weights are
+// not barycentric: what every path query checks of the end points it is given.
+void check_endpoint(const TriangleMesh& mesh, const Endpoint& end);
 
 // Sum of the segment lengths.
 double polyline_length(const std::vector<PathPoint>& points);
