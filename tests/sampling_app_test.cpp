@@ -41,9 +41,9 @@ TEST(SampleApp, PlyRoundTripMatchesLibrary) {
   }
   ASSERT_TRUE(face && u && v);
   for (std::size_t i = 0; i < lib.samples.size(); ++i) {
-    EXPECT_EQ(Index((*face)[i]), lib.samples[i].face);
-    EXPECT_NEAR((*u)[i], lib.samples[i].barycentric[1], 1e-6);
-    EXPECT_NEAR((*v)[i], lib.samples[i].barycentric[2], 1e-6);
+    EXPECT_EQ(Index((*face)[i]), lib.samples[i].point.element);
+    EXPECT_NEAR((*u)[i], lib.samples[i].point.barycentric[1], 1e-6);
+    EXPECT_NEAR((*v)[i], lib.samples[i].point.barycentric[2], 1e-6);
     EXPECT_NEAR(back.mesh.positions[i].x, lib.samples[i].position.x, 1e-4);
     EXPECT_NEAR(dot(back.mesh.normals[i], lib.samples[i].normal), 1.0, 1e-5);
   }

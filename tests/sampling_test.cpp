@@ -33,9 +33,9 @@ double min_separation(const TriangleMesh& mesh, const sampling::SamplingResult& 
   double best = go.max_distance;
   for (std::size_t i = 0; i < result.samples.size(); i += stride) {
     const auto& s = result.samples[i];
-    const GeodesicResult run = solver.compute({Source::in_face(s.face, s.barycentric)}, go);
+    const GeodesicResult run = solver.compute({Source::at(s.point)}, go);
     for (std::size_t j = 0; j < result.samples.size(); ++j)
-      if (j != i) best = std::min(best, run.distance_at(mesh, result.samples[j].face, result.samples[j].barycentric));
+      if (j != i) best = std::min(best, run.distance_at(mesh, result.samples[j].point.element, result.samples[j].point.barycentric));
   }
   return best;
 }
@@ -71,7 +71,7 @@ void check_poisson(const TriangleMesh& mesh, double fraction_of_diagonal) {
   EXPECT_NEAR(double(result.samples.size()) / flat, 1.0, 0.10) << result.samples.size() << " vs " << flat;
   // Samples are where they say they are.
   for (const auto& s : result.samples) {
-    const auto again = sampling::make_sample(mesh, s.face, s.barycentric);
+    const auto again = sampling::make_sample(mesh, s.point.element, s.point.barycentric);
     ASSERT_EQ(again.position, s.position);
     ASSERT_NEAR(norm(s.normal), 1.0, 1e-9);
   }
@@ -112,15 +112,15 @@ TEST(SamplingPoisson, SameSeedSameSamples) {
   const auto a = sampler.sample(o), b = sampler.sample(o);
   ASSERT_EQ(a.samples.size(), b.samples.size());
   for (std::size_t i = 0; i < a.samples.size(); ++i) {
-    EXPECT_EQ(a.samples[i].face, b.samples[i].face);
-    EXPECT_EQ(a.samples[i].barycentric, b.samples[i].barycentric);
+    EXPECT_EQ(a.samples[i].point.element, b.samples[i].point.element);
+    EXPECT_EQ(a.samples[i].point.barycentric, b.samples[i].point.barycentric);
   }
   o.seed = 2;
   const auto c = sampler.sample(o);
   EXPECT_NE(a.samples[0].position, c.samples[0].position);
   // The first sample of seed 1 is fixed by our own PRNG and the solver's own layout (the first
   // batch of candidates is taken in layout order): the same on every platform.
-  EXPECT_EQ(a.samples[0].face, 958u);
+  EXPECT_EQ(a.samples[0].point.element, 958u);
 }
 
 TEST(SamplingPoisson, CountIsMetWithinOnePercent) {

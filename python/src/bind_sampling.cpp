@@ -46,7 +46,7 @@ Samples sample(const py::handle& V, const py::handle& F, const py::object& count
   std::vector<std::array<double, 3>> bary;
   std::vector<Index> faces;
   for (const sampling::Sample& s : r.samples) {
-    points.push_back(s.position), normals.push_back(s.normal), bary.push_back(s.barycentric), faces.push_back(s.face);
+    points.push_back(s.position), normals.push_back(s.normal), bary.push_back(s.point.barycentric), faces.push_back(s.point.element);
   }
   return {to_array(std::move(points)), to_array(std::move(bary)), to_array(std::move(normals)),
           to_array(std::move(r.coverage)), labels_to_array(faces), r.radius,

@@ -16,7 +16,7 @@ void write_txt(const std::string& path, const std::vector<sampling::Sample>& sam
   for (const sampling::Sample& s : samples) {
     const int n = std::snprintf(line, sizeof line, "%.9g %.9g %.9g %.7g %.7g %.7g %u %.9g %.9g\n",
                                 s.position.x, s.position.y, s.position.z, s.normal.x, s.normal.y,
-                                s.normal.z, unsigned(s.face), s.barycentric[1], s.barycentric[2]);
+                                s.normal.z, unsigned(s.point.element), s.point.barycentric[1], s.point.barycentric[2]);
     text.append(line, std::size_t(n));
   }
   file.write(text.data(), text.size());
@@ -34,9 +34,9 @@ void write_samples(const std::string& path, const std::vector<sampling::Sample>&
   for (const sampling::Sample& s : samples) {
     cloud.positions.push_back(s.position);
     cloud.normals.push_back(s.normal);
-    face.push_back(std::int32_t(s.face));
-    u.push_back(float(s.barycentric[1]));
-    v.push_back(float(s.barycentric[2]));
+    face.push_back(std::int32_t(s.point.element));
+    u.push_back(float(s.point.barycentric[1]));
+    v.push_back(float(s.point.barycentric[2]));
   }
   attributes.labels.emplace_back("face", std::move(face));
   attributes.scalars.emplace_back("u", std::move(u));

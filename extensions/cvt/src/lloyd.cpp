@@ -378,14 +378,14 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   if (o.initial == InitialSites::random) {
     while (sites.size() < n) {
       const sampling::Sample s = uniform.draw(w.mesh, random);
-      sites.push_back(g.at(s.face, s.barycentric));
+      sites.push_back(g.at(s.point.element, s.point.barycentric));
     }
     return sites;
   }
   const bool on_input = so.mode == sampling::Mode::poisson || n <= mesh.num_vertices() / 2;
   if (!on_input) {
     const sampling::Sampler sampler(w.mesh);
-    for (const sampling::Sample& s : sampler.sample(so).samples) sites.push_back(g.at(s.face, s.barycentric));
+    for (const sampling::Sample& s : sampler.sample(so).samples) sites.push_back(g.at(s.point.element, s.point.barycentric));
     return sites;
   }
   const sampling::Sampler sampler(mesh);
@@ -398,7 +398,7 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   for (const sampling::Sample& s : sampler.sample(so).samples) {
     SurfaceSite best;
     double best_d = std::numeric_limits<double>::infinity();
-    for (Index i = begin[s.face]; i < begin[s.face + 1]; ++i) {
+    for (Index i = begin[s.point.element]; i < begin[s.point.element + 1]; ++i) {
       const Index f = children[i];
       const SurfaceSite q = g.closest_on_face(f, s.position);
       const double d = distance(q.position, s.position);
@@ -411,7 +411,7 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   if (sites.size() > n) sites.resize(n);
   while (sites.size() < n) {
     const sampling::Sample s = uniform.draw(w.mesh, random);
-    sites.push_back(g.at(s.face, s.barycentric));
+    sites.push_back(g.at(s.point.element, s.point.barycentric));
   }
   return sites;
 }

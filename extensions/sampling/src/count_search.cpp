@@ -18,7 +18,7 @@ namespace {
 std::vector<double> coverage_of(const GeodesicSolver& solver, const std::vector<Sample>& samples) {
   std::vector<Source> sources;
   sources.reserve(samples.size());
-  for (const Sample& s : samples) sources.push_back(Source::in_face(s.face, s.barycentric));
+  for (const Sample& s : samples) sources.push_back(Source::at(s.point));
   GeodesicOptions options;
   options.want_face_distances = false;
   return solver.compute(sources, options).vertex_distance;

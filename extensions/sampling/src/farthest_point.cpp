@@ -25,9 +25,9 @@ SamplingResult Sampler::farthest(const SamplingOptions& options) const {
   // The first sample: the corner with the largest weight of a point drawn by area.
   Random random(options.seed);
   const Sample first = points_.draw(mesh_, random);
-  const int corner = int(std::max_element(first.barycentric.begin(), first.barycentric.end()) -
-                         first.barycentric.begin());
-  Index next = mesh_.triangles[first.face][corner];
+  const auto& w = first.point.barycentric;
+  const int corner = int(std::max_element(w.begin(), w.end()) - w.begin());
+  Index next = mesh_.triangles[first.point.element][corner];
   double next_distance = inf;
   result.radius = inf;
 

@@ -69,11 +69,11 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
   // Runs the candidate's propagation; keeps it unless it reaches an earlier sample closer
   // than r (the other direction of the test, see CoverageField::clear_of_samples).
   auto accept = [&](const Sample& s) {
-    const LocalField run = solver_.compute_local({Source::in_face(s.face, s.barycentric)}, go, workspace);
+    const LocalField run = solver_.compute_local({Source::at(s.point)}, go, workspace);
     count_run(result.stats, run);
     if (!field.clear_of_samples(run, mesh_)) return false;
     field.merge(run);
-    field.add_sample(s.face, s.barycentric);
+    field.add_sample(s.point.element, s.point.barycentric);
     result.samples.push_back(s);
     if (options.progress && field.referenced_count())
       options.progress(1.0 - double(field.uncovered()) / double(field.referenced_count()));
@@ -88,11 +88,13 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
   while (rejected_in_a_row < options.max_rejections && field.uncovered() > 0) {
     batch.clear();
     for (std::size_t i = 0; i < kBatch; ++i) batch.push_back(points_.draw(mesh_, random));
-    std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) { return solver_.face_memory_rank(a.face) < solver_.face_memory_rank(b.face); });
+    std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) {
+      return solver_.face_memory_rank(a.point.element) < solver_.face_memory_rank(b.point.element);
+    });
     for (const Sample& s : batch) {
       if (rejected_in_a_row >= options.max_rejections || field.uncovered() == 0) break;
       ++result.stats.candidates;
-      if (field.distance_at(s.face, s.position) < radius || !accept(s)) {
+      if (field.distance_at(s.point.element, s.position) < radius || !accept(s)) {
         ++result.stats.rejected;
         ++rejected_in_a_row;
         continue;

@@ -17,18 +17,18 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   const std::vector<Sample>& samples = result.samples;
   if (samples.empty()) throw InvalidInput("quality: no samples");
   for (const Sample& s : samples)
-    if (s.face >= mesh.num_faces()) throw InvalidInput("quality: a sample names a face that does not exist");
+    if (!s.point.exists_in(mesh)) throw InvalidInput("quality: a sample names a face that does not exist");
   const double r = result.radius;
   SamplingQuality q;
 
   // Samples grouped by face (CSR), so each bounded run looks only at the faces it reached
   // that hold a sample.
   std::vector<Index> begin(mesh.num_faces() + 1, 0), by_face(samples.size());
-  for (const Sample& s : samples) ++begin[s.face + 1];
+  for (const Sample& s : samples) ++begin[s.point.element + 1];
   std::partial_sum(begin.begin(), begin.end(), begin.begin());
   {
     std::vector<Index> fill(begin.begin(), begin.end() - 1);
-    for (std::size_t i = 0; i < samples.size(); ++i) by_face[fill[samples[i].face]++] = Index(i);
+    for (std::size_t i = 0; i < samples.size(); ++i) by_face[fill[samples[i].point.element]++] = Index(i);
   }
 
   std::vector<bool> is_checked(samples.size(), options.max_checked == 0 || options.max_checked >= samples.size());
@@ -51,7 +51,7 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   LocalWorkspace workspace = sampler.solver().make_workspace();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Sample& s = samples[i];
-    const LocalField run = sampler.solver().compute_local({Source::in_face(s.face, s.barycentric)}, go, workspace);
+    const LocalField run = sampler.solver().compute_local({Source::at(s.point)}, go, workspace);
     for (std::size_t k = 0; k < run.vertices.size(); ++k)
       coverage[run.vertices[k]] = std::min(coverage[run.vertices[k]], run.vertex_distance[k]);
     if (is_checked[i]) {
@@ -74,7 +74,7 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   if (!all_reached) {
     std::vector<Source> all;
     all.reserve(samples.size());
-    for (const Sample& s : samples) all.push_back(Source::in_face(s.face, s.barycentric));
+    for (const Sample& s : samples) all.push_back(Source::at(s.point));
     const GeodesicResult field = sampler.solver().compute(all);
     for (std::size_t v = 0; v < coverage.size(); ++v)
       if (!std::isfinite(coverage[v])) coverage[v] = field.vertex_distance[v];

@@ -17,9 +17,8 @@ Sample make_sample(const TriangleMesh& mesh, Index face, std::array<double, 3> b
   const Triangle& t = mesh.triangles[face];
   const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
   Sample s;
-  s.face = face;
-  s.barycentric = barycentric;
-  s.position = barycentric[0] * a + barycentric[1] * b + barycentric[2] * c;
+  s.point = SurfacePoint::in_face(face, barycentric);
+  s.position = s.point.position(mesh);
   const Vec3 n = cross(b - a, c - a);
   const double len = norm(n);
   if (len > 0) s.normal = (1.0 / len) * n;

@@ -1,9 +1,10 @@
 #pragma once
-// Points on a triangle mesh: a sample as (face, barycentric) with its position and face
+// Points on a triangle mesh: a sample as a point in a face with its position and face
 // normal, and candidates drawn uniformly by area (face picked through a prefix sum of the
 // face areas, then a uniform point of the triangle).
 #include <gsp/mesh.hpp>
 #include <gsp/sampling/random.hpp>
+#include <gsp/surface_point.hpp>
 
 #include <array>
 #include <vector>
@@ -11,10 +12,9 @@
 namespace gsp::sampling {
 
 struct Sample {
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{1, 0, 0};   // weights of the face's corners 0, 1, 2
+  SurfacePoint point = SurfacePoint::in_face(kInvalidIndex, {1, 0, 0});   // always in a face
   Vec3 position;
-  Vec3 normal;                                  // unit face normal ((0,0,0) for a zero-area face)
+  Vec3 normal;   // unit face normal ((0,0,0) for a zero-area face)
 };
 
 // The sample at (face, barycentric) of `mesh` (position and face normal filled in).
