@@ -48,8 +48,9 @@ TEST(CvtRobustness, CadMeshesRunToTheEnd) {
     // The fixes during the iterations (5%) and the closing rounds after them (25%).
     EXPECT_LE(r.sites.size(), 800u + 40u + 200u) << name;
     for (const cvt::Site& s : r.sites) {
-      ASSERT_LT(s.face, m.num_faces()) << name;
-      EXPECT_NEAR(s.barycentric[0] + s.barycentric[1] + s.barycentric[2], 1.0, 1e-9);
+      ASSERT_LT(s.point.element, m.num_faces()) << name;
+      const auto& w = s.point.barycentric;
+      EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-9);
       EXPECT_TRUE(is_finite(s.position));
     }
     for (std::size_t i = 1; i < r.energy_curve.size(); ++i) EXPECT_LE(r.energy_curve[i], r.energy_curve[i - 1]) << name;

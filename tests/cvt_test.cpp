@@ -121,11 +121,8 @@ TEST(CvtLloyd, SquareApproachesHexagonalEnergyMonotonically) {
   std::size_t on_boundary = 0;
   for (const cvt::Site& s : b.sites) {
     // Sites on the input mesh: face + barycentric reproduce the position.
-    ASSERT_LT(s.face, m.num_faces());
-    const Triangle& t = m.triangles[s.face];
-    const Vec3 p = s.barycentric[0] * m.positions[t[0]] + s.barycentric[1] * m.positions[t[1]] +
-                   s.barycentric[2] * m.positions[t[2]];
-    EXPECT_LT(distance(p, s.position), 1e-9);
+    ASSERT_LT(s.point.element, m.num_faces());
+    EXPECT_LT(distance(s.point.position(m), s.position), 1e-9);
     EXPECT_NEAR(s.position.z, 0.0, 1e-12);
     if (s.on_boundary) {
       ++on_boundary;

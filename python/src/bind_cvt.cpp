@@ -61,7 +61,7 @@ Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, c
   std::vector<Vec3> positions;
   std::vector<std::array<double, 3>> bary;
   std::vector<Index> faces;
-  for (const cvt::Site& s : r.sites) positions.push_back(s.position), bary.push_back(s.barycentric), faces.push_back(s.face);
+  for (const cvt::Site& s : r.sites) positions.push_back(s.position), bary.push_back(s.point.barycentric), faces.push_back(s.point.element);
   return {to_array(std::move(positions)), to_array(std::move(bary)), to_array(std::move(r.energy_curve)),
           labels_to_array(faces), labels_to_array(r.vertex_label), r.energy, r.stats.iterations, r.stats.converged};
 }

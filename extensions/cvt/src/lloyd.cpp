@@ -43,7 +43,7 @@ class Lloyd {
     auto t0 = Clock::now();
     std::vector<Source> sources;
     sources.reserve(sites.size());
-    for (const SurfaceSite& s : sites) sources.push_back(Source::in_face(s.face, s.barycentric));
+    for (const SurfaceSite& s : sites) sources.push_back(Source::at(s.point));
     GeodesicOptions go;
     go.want_face_sources = true;
     Evaluation e;
@@ -82,7 +82,7 @@ class Lloyd {
       bool boundary = o_.boundary_sites && touches_boundary(e, s, k);
       if (keep_boundary_state) boundary = boundary && sites[s].on_boundary;
       out[s] = project(e, s, k, target, boundary);
-      if (out[s].face == kInvalidIndex) out[s] = sites[s];
+      if (out[s].point.element == kInvalidIndex) out[s] = sites[s];
     }
     return out;
   }
@@ -190,7 +190,7 @@ class Lloyd {
       const Index k = e.components.main[s];
       if (k == kInvalidIndex || !touches_boundary(e, s, k)) continue;
       const SurfaceSite q = project(e, s, k, sites[s].position, true);
-      if (q.face != kInvalidIndex) out[s] = q;
+      if (q.point.element != kInvalidIndex) out[s] = q;
     }
     return out;
   }
@@ -204,7 +204,7 @@ class Lloyd {
                                    std::size_t& counter, std::size_t cap) {
     std::size_t kept = 0;
     for (const SurfaceSite& s : added) {
-      if (s.face == kInvalidIndex || counter >= cap) continue;
+      if (s.point.element == kInvalidIndex || counter >= cap) continue;
       sites.push_back(s);
       ++counter;
       ++kept;
@@ -214,7 +214,7 @@ class Lloyd {
 
   static std::vector<Index> faces_of(const std::vector<SurfaceSite>& sites) {
     std::vector<Index> f(sites.size());
-    for (std::size_t i = 0; i < sites.size(); ++i) f[i] = sites[i].face;
+    for (std::size_t i = 0; i < sites.size(); ++i) f[i] = sites[i].point.element;
     return f;
   }
 
@@ -352,10 +352,10 @@ std::size_t site_count(const CvtOptions& o, double area) {
 
 Site to_input(const WorkingMesh& w, const SurfaceSite& s) {
   Site out;
-  out.face = w.parent[s.face];
-  out.barycentric = {0, 0, 0};
+  const Index f = s.point.element;
+  out.point = SurfacePoint::in_face(w.parent[f], {0, 0, 0});
   for (int k = 0; k < 3; ++k)
-    for (int j = 0; j < 3; ++j) out.barycentric[j] += s.barycentric[k] * w.corner_bary[s.face][k][j];
+    for (int j = 0; j < 3; ++j) out.point.barycentric[j] += s.point.barycentric[k] * w.corner_bary[f][k][j];
   out.position = s.position;
   out.on_boundary = s.on_boundary;
   return out;
@@ -572,7 +572,7 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   for (const SurfaceSite& s : sites) {
     out.sites.push_back(to_input(out.working, s));
     out.working_site_position.push_back(s.position);
-    out.working_site_face.push_back(s.face);
+    out.working_site_face.push_back(s.point.element);
   }
   return out;
 }

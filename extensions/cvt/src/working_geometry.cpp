@@ -28,11 +28,9 @@ SurfaceSite WorkingGeometry::at(Index face, std::array<double, 3> b) const {
   const double s = b[0] + b[1] + b[2];
   if (s > 0) for (double& x : b) x /= s;
   else b = {1, 0, 0};
-  const Triangle& t = mesh.triangles[face];
   SurfaceSite site;
-  site.face = face;
-  site.barycentric = b;
-  site.position = b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] + b[2] * mesh.positions[t[2]];
+  site.point = SurfacePoint::in_face(face, b);
+  site.position = site.point.position(mesh);
   return site;
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 // What the Lloyd iterations read of the working mesh: connectivity, face areas and
-// centroids, boundary halfedges; and points on it (a site as face + barycentric).
+// centroids, boundary halfedges; and points on it (sites).
 #include <gsp/closest_point.hpp>
 #include <gsp/connectivity.hpp>
+#include <gsp/cvt/cvt.hpp>
 #include <gsp/mesh.hpp>
 
 #include <array>
@@ -10,12 +11,7 @@
 
 namespace gsp::cvt::detail {
 
-struct SurfaceSite {
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{1, 0, 0};
-  Vec3 position;
-  bool on_boundary = false;
-};
+using SurfaceSite = Site;   // a site on the working mesh
 
 struct WorkingGeometry {
   explicit WorkingGeometry(const TriangleMesh& m);

@@ -14,6 +14,7 @@
 // centroids and boundaries only as fine as the faces. See docs/cvt.md.
 #include <gsp/geodesics.hpp>
 #include <gsp/mesh.hpp>
+#include <gsp/surface_point.hpp>
 
 #include <array>
 #include <cstdint>
@@ -79,10 +80,11 @@ struct CvtOptions {
   IterationFn on_iteration;
 };
 
-// A site on the input mesh: (face, barycentric) of the input, and its position.
+// A site: a point in a face (face kInvalidIndex until placed), its position, and whether it
+// was placed on the boundary. CvtResult::sites are on the input mesh; the iterations keep
+// theirs on the working mesh.
 struct Site {
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{1, 0, 0};
+  SurfacePoint point = SurfacePoint::in_face(kInvalidIndex, {1, 0, 0});
   Vec3 position;
   bool on_boundary = false;
 };
