@@ -124,9 +124,11 @@ TEST(CliParse, VectorsAndFacePoints) {
     EXPECT_THROW(gsp::cli::parse_vec3(bad, "--p"), gsp::cli::UsageError) << bad;
 
   const auto fp = gsp::cli::parse_face_point("12:0.25,0.5", "--f");
-  EXPECT_EQ(fp.face, 12u);
-  EXPECT_DOUBLE_EQ(fp.u, 0.25);
-  EXPECT_DOUBLE_EQ(fp.v, 0.5);
+  EXPECT_FALSE(fp.is_vertex());
+  EXPECT_EQ(fp.element, 12u);
+  EXPECT_DOUBLE_EQ(fp.barycentric[0], 0.25);
+  EXPECT_DOUBLE_EQ(fp.barycentric[1], 0.25);
+  EXPECT_DOUBLE_EQ(fp.barycentric[2], 0.5);
   for (const char* bad : {"12", "12:0.5", "x:0.1,0.1", "-1:0.1,0.1", "3:0.7,0.7", "3:-0.1,0.5", "3:0.1,0.2,0.3"})
     EXPECT_THROW(gsp::cli::parse_face_point(bad, "--f"), gsp::cli::UsageError) << bad;
 }

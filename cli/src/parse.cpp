@@ -2,6 +2,7 @@
 
 #include <gsp/cli/app.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -103,19 +104,17 @@ Vec3 parse_vec3(std::string_view text, std::string_view option) {
   return {v[0], v[1], v[2]};
 }
 
-FacePoint parse_face_point(std::string_view text, std::string_view option) {
+SurfacePoint parse_face_point(std::string_view text, std::string_view option) {
   const std::size_t colon = text.find(':');
   if (colon == std::string_view::npos) bad(option, text, "expected F:u,v (face index, then two barycentric weights)");
-  FacePoint p;
-  p.face = to_index(trim(text.substr(0, colon)), option, text, "a face index");
+  const Index face = to_index(trim(text.substr(0, colon)), option, text, "a face index");
   const std::vector<double> uv = parse_number_list(text.substr(colon + 1), option);
   if (uv.size() != 2) bad(option, text, "expected two barycentric weights u,v after the colon, got " + std::to_string(uv.size()));
-  p.u = uv[0];
-  p.v = uv[1];
+  const double u = uv[0], v = uv[1];
   constexpr double eps = 1e-9;
-  if (p.u < -eps || p.v < -eps || p.u + p.v > 1.0 + eps)
+  if (u < -eps || v < -eps || u + v > 1.0 + eps)
     bad(option, text, "barycentric weights must satisfy u >= 0, v >= 0, u + v <= 1");
-  return p;
+  return SurfacePoint::in_face(face, {std::max(0.0, 1 - u - v), u, v});
 }
 
 io::Format output_format(const std::string& path, std::initializer_list<io::Format> allowed,

@@ -27,15 +27,10 @@ ResolvedSources resolve_sources(const Options& o, const cli::LoadedMesh& in) {
     r.max_snap_distance = std::max(r.max_snap_distance, s.distance);
   }
   for (const std::string& arg : o.source_faces) {
-    const cli::FacePoint fp = cli::parse_face_point(arg, "--source-face");
-    if (fp.face >= mesh.num_faces())
-      throw InvalidInput("--source-face: face " + std::to_string(fp.face) + " does not exist (" +
-                         std::to_string(mesh.num_faces()) + " faces)");
-    const std::array<double, 3> b{std::max(0.0, 1 - fp.u - fp.v), fp.u, fp.v};
-    const Triangle& t = mesh.triangles[fp.face];
-    r.sources.push_back(Source::in_face(fp.face, b));
-    r.positions.push_back(b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] +
-                          b[2] * mesh.positions[t[2]]);
+    const SurfacePoint p = cli::parse_face_point(arg, "--source-face");
+    if (!p.exists_in(mesh)) throw InvalidInput("--source-face: " + p.missing_from(mesh));
+    r.sources.push_back(Source::at(p));
+    r.positions.push_back(p.position(mesh));
   }
   if (r.sources.empty())
     throw cli::UsageError("no source: give --source-vertex, --source-point, --source-face, --source-polyline, "

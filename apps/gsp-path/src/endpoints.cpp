@@ -5,7 +5,8 @@
 #include <gsp/closest_point.hpp>
 #include <gsp/errors.hpp>
 
-#include <algorithm>
+#include <string>
+#include <vector>
 
 namespace gsp::path_app {
 
@@ -13,14 +14,11 @@ ResolvedEndpoint resolve_endpoint(const std::string& text, const std::string& op
   const TriangleMesh& mesh = in.mesh;
   ResolvedEndpoint r;
   if (text.find(':') != std::string::npos) {
-    const cli::FacePoint fp = cli::parse_face_point(text, option);
-    if (fp.face >= mesh.num_faces())
-      throw InvalidInput(option + ": face " + std::to_string(fp.face) + " does not exist (" +
-                         std::to_string(mesh.num_faces()) + " faces)");
-    r.endpoint = pathfinding::Endpoint::in_face(fp.face, {std::max(0.0, 1 - fp.u - fp.v), fp.u, fp.v});
+    r.endpoint = cli::parse_face_point(text, option);
+    if (!r.endpoint.exists_in(mesh)) throw InvalidInput(option + ": " + r.endpoint.missing_from(mesh));
   } else if (text.find(',') != std::string::npos) {
     const ClosestPoint s = closest_surface_point(mesh, cli::parse_vec3(text, option));
-    r.endpoint = pathfinding::Endpoint::in_face(s.point.element, s.point.barycentric);
+    r.endpoint = s.point;
     r.snap_distance = s.distance;
   } else {
     const std::vector<Index> v = cli::parse_index_list(text, option);

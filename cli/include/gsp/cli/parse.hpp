@@ -11,6 +11,7 @@
 //   ...
 //   for (auto& a : vertex_args) for (Index v : gsp::cli::parse_index_list(a, "--source-vertex")) ...
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/surface_point.hpp>
 #include <gsp/types.hpp>
 
 #include <initializer_list>
@@ -30,13 +31,10 @@ std::vector<double> parse_number_list(std::string_view text, std::string_view op
 Vec3 parse_vec3(std::string_view text, std::string_view option);
 
 // A point inside a face: "F:u,v" with F a face index and (u, v) the barycentric weights of
-// the face's corners 1 and 2; corner 0 gets 1 - u - v. Requires u >= 0, v >= 0, u + v <= 1
-// (up to 1e-9). Whether F exists is checked against the mesh later (gsp::InvalidInput).
-struct FacePoint {
-  Index face = 0;
-  double u = 0.0, v = 0.0;
-};
-FacePoint parse_face_point(std::string_view text, std::string_view option);
+// the face's corners 1 and 2; corner 0 gets 1 - u - v, clamped at 0 (u + v may pass 1 by the
+// tolerance). Requires u >= 0, v >= 0, u + v <= 1 (up to 1e-9). Whether F exists is checked
+// against the mesh later (SurfacePoint::exists_in, gsp::InvalidInput).
+SurfacePoint parse_face_point(std::string_view text, std::string_view option);
 
 // A finite double (for options that must be finite but are given as strings).
 double parse_number(std::string_view text, std::string_view option);
