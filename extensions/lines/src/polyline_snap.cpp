@@ -19,29 +19,25 @@ using intrinsic::Vec2;
 constexpr int kMaxDepth = 30;
 constexpr double kZeroWeight = 1e-12;
 
-struct Snapped {
-  Index face;
-  std::array<double, 3> w;
-};
-
-Snapped snap(const TriangleMesh& mesh, Vec3 p, double& max_distance) {
+// A polyline point snapped onto the surface: the face point closest to it.
+SurfacePoint snap(const TriangleMesh& mesh, Vec3 p, double& max_distance) {
   const ClosestPoint s = closest_surface_point(mesh, p);
   max_distance = std::max(max_distance, s.distance);
-  return {s.point.element, s.point.barycentric};
+  return s.point;
 }
 
 // The same surface point as weights of face g's corners, when it lies on g (on a shared edge
 // or vertex): every corner it leans on must be one of g's.
-bool express_in(const TriangleMesh& mesh, const Snapped& s, Index g, std::array<double, 3>& out) {
+bool express_in(const TriangleMesh& mesh, const SurfacePoint& s, Index g, std::array<double, 3>& out) {
   out = {0, 0, 0};
   double sum = 0;
   for (int i = 0; i < 3; ++i) {
-    if (s.w[i] <= kZeroWeight) continue;
+    if (s.barycentric[i] <= kZeroWeight) continue;
     int k = 0;
-    while (k < 3 && mesh.triangles[g][k] != mesh.triangles[s.face][i]) ++k;
+    while (k < 3 && mesh.triangles[g][k] != mesh.triangles[s.element][i]) ++k;
     if (k == 3) return false;
-    out[k] += s.w[i];
-    sum += s.w[i];
+    out[k] += s.barycentric[i];
+    sum += s.barycentric[i];
   }
   if (!(sum > 0)) return false;
   for (double& x : out) x /= sum;
@@ -148,12 +144,12 @@ class Layer {
 
   // Joins s (closest point of a) to t (closest point of b), a and b being 3D points of segment
   // `segment`.
-  void join(const Snapped& s, const Snapped& t, Vec3 a, Vec3 b, Index segment, int depth) {
+  void join(const SurfacePoint& s, const SurfacePoint& t, Vec3 a, Vec3 b, Index segment, int depth) {
     std::array<double, 3> w;
-    if (s.face == t.face) return piece(s.face, s.w, t.w, segment);
-    if (express_in(mesh_, s, t.face, w)) return piece(t.face, w, t.w, segment);
-    if (express_in(mesh_, t, s.face, w)) return piece(s.face, s.w, w, segment);
-    const Triangle &fs = mesh_.triangles[s.face], &ft = mesh_.triangles[t.face];
+    if (s.element == t.element) return piece(s.element, s.barycentric, t.barycentric, segment);
+    if (express_in(mesh_, s, t.element, w)) return piece(t.element, w, t.barycentric, segment);
+    if (express_in(mesh_, t, s.element, w)) return piece(s.element, s.barycentric, w, segment);
+    const Triangle &fs = mesh_.triangles[s.element], &ft = mesh_.triangles[t.element];
     Index common = kInvalidIndex;
     const int shared = shared_vertices(fs, ft, &common);
     // Faces sharing an edge: straight across it, unless the straight line misses the edge
@@ -161,14 +157,14 @@ class Layer {
     if (shared >= 2 && (across_edge(s, t, segment, depth >= kMaxDepth))) return;
     if (depth < kMaxDepth) {
       const Vec3 m = 0.5 * (a + b);
-      const Snapped sm = snap(mesh_, m, out_.max_snap_distance);
+      const SurfacePoint sm = snap(mesh_, m, out_.max_snap_distance);
       join(s, sm, a, m, segment, depth + 1);
       join(sm, t, m, b, segment, depth + 1);
       return;
     }
     if (shared == 1) {   // faces touching at one vertex: go through it
-      piece(s.face, s.w, unit(corner_with(fs, common)), segment);
-      piece(t.face, unit(corner_with(ft, common)), t.w, segment);
+      piece(s.element, s.barycentric, unit(corner_with(fs, common)), segment);
+      piece(t.element, unit(corner_with(ft, common)), t.barycentric, segment);
       return;
     }
     const Vec3 p = mesh_.positions[fs[0]];
@@ -186,13 +182,13 @@ class Layer {
   // s and t in faces sharing an edge: the straight line between them in the unfolding of the
   // two faces crosses the edge at one point (clamped to the edge when it would miss it).
   // Returns false (and adds nothing) when the line misses the edge, unless `clamp`.
-  bool across_edge(const Snapped& s, const Snapped& t, Index segment, bool clamp) {
-    const Triangle &fs = mesh_.triangles[s.face], &ft = mesh_.triangles[t.face];
-    const FaceFrame ff = intrinsic::face_frame(mesh_, s.face);
-    const std::array<Vec2, 3> g = unfold_neighbour(mesh_, ff, s.face, t.face);
+  bool across_edge(const SurfacePoint& s, const SurfacePoint& t, Index segment, bool clamp) {
+    const Triangle &fs = mesh_.triangles[s.element], &ft = mesh_.triangles[t.element];
+    const FaceFrame ff = intrinsic::face_frame(mesh_, s.element);
+    const std::array<Vec2, 3> g = unfold_neighbour(mesh_, ff, s.element, t.element);
     const int j = shared_halfedge(fs, ft);
-    const Vec2 se = ff.to_edge(j, ff.at(s.w));
-    const Vec2 te = ff.to_edge(j, t.w[0] * g[0] + t.w[1] * g[1] + t.w[2] * g[2]);
+    const Vec2 se = ff.to_edge(j, ff.at(s.barycentric));
+    const Vec2 te = ff.to_edge(j, t.barycentric[0] * g[0] + t.barycentric[1] * g[1] + t.barycentric[2] * g[2]);
     const double e = ff.len[j];
     double x = 0.5 * (se.x + te.x);
     if (se.y - te.y > 0) x = se.x + (te.x - se.x) * (se.y / (se.y - te.y));
@@ -203,8 +199,8 @@ class Layer {
     std::array<double, 3> cs{0, 0, 0}, ct{0, 0, 0};
     cs[j] = 1 - tau, cs[(j + 1) % 3] = tau;
     ct[corner_with(ft, va)] = 1 - tau, ct[corner_with(ft, vb)] = tau;
-    piece(s.face, s.w, cs, segment);
-    piece(t.face, ct, t.w, segment);
+    piece(s.element, s.barycentric, cs, segment);
+    piece(t.element, ct, t.barycentric, segment);
     return true;
   }
 
@@ -224,13 +220,11 @@ LineSource polyline_source(const TriangleMesh& mesh, const std::vector<Polyline>
     if (line.size() < 2) throw InvalidInput(name + ": needs at least two points, has " + std::to_string(line.size()));
     for (std::size_t i = 0; i < line.size(); ++i)
       if (!is_finite(line[i])) throw InvalidInput(name + ": point " + std::to_string(i) + " is not finite");
-    std::vector<Snapped> snapped;
+    std::vector<SurfacePoint> snapped;
     std::vector<Vec3> on_surface;
     for (const Vec3& p : line) {
       snapped.push_back(snap(mesh, p, src.max_snap_distance));
-      const Triangle& t = mesh.triangles[snapped.back().face];
-      const auto& w = snapped.back().w;
-      on_surface.push_back(w[0] * mesh.positions[t[0]] + w[1] * mesh.positions[t[1]] + w[2] * mesh.positions[t[2]]);
+      on_surface.push_back(snapped.back().position(mesh));
     }
     for (std::size_t i = 0; i + 1 < line.size(); ++i) {
       const Index segment = Index(src.segments.size());
