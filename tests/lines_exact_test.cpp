@@ -91,13 +91,13 @@ std::vector<double> sampled_exact(const TriangleMesh& m, const lines::LineSource
       // straight-line distance when sources lie exactly on edges, as the crossing points of a
       // snapped polyline do.
       for (double& x : w) x = (1 - 1e-6) * x / sum + 1e-6 / 3;
-      const Triangle& f = m.triangles[p.face];
-      const Vec3 q = w[0] * m.positions[f[0]] + w[1] * m.positions[f[1]] + w[2] * m.positions[f[2]];
+      const reference::ExactSource s = reference::ExactSource::in_face(p.face, w);
+      const Vec3 q = s.position(m);
       bool seen = false;
       for (const Vec3& o : placed) seen = seen || distance(o, q) < tiny;
       if (seen) continue;
       placed.push_back(q);
-      samples.push_back(reference::ExactSource::at_point(p.face, w));
+      samples.push_back(s);
     }
   return reference::exact_geodesic_distances(m, samples);
 }

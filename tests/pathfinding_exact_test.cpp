@@ -111,7 +111,7 @@ TEST(PathExact, BothEndsFacePoints) {
   for (int trial = 0; trial < 4; ++trial) {
     const Index fs = Index(rng.next() % m.num_faces());
     const Endpoint from = Endpoint::in_face(fs, {0.2, 0.5, 0.3});
-    exact.set_sources({reference::ExactSource::at_point(fs, from.barycentric)});
+    exact.set_sources({from});   // an end point is a reference source as it is
     std::vector<Endpoint> ends;
     for (int k = 0; k < 4; ++k) ends.push_back(Endpoint::in_face(Index(rng.next() % m.num_faces()), {0.6, 0.1, 0.3}));
     const auto r = pathfinding::shortest_paths(solver, tracer, from, ends);

@@ -85,7 +85,7 @@ TEST(ExactGeodesics, FlatGridSourceInsideFaceEqualsEuclidean) {
   const auto& t = grid.triangles[face];
   const Vec3 p = w[0] * grid.positions[t[0]] + w[1] * grid.positions[t[1]] + w[2] * grid.positions[t[2]];
   ExactGeodesicSolver solver(grid);
-  const auto d = solver.distances({ExactSource::at_point(face, w)});
+  const auto d = solver.distances({ExactSource::in_face(face, w)});
   for (std::size_t v = 0; v < d.size(); ++v)
     EXPECT_NEAR(d[v], gsp::distance(grid.positions[v], p), 1e-9) << "vertex " << v;
   // Point queries: the source point itself, and a point in another face.
@@ -294,10 +294,10 @@ TEST(ExactGeodesics, RejectsBadSources) {
   ExactGeodesicSolver solver(gsp::test::quad());
   EXPECT_THROW(solver.set_sources({}), gsp::InvalidInput);
   EXPECT_THROW(solver.set_sources({ExactSource::at_vertex(4)}), gsp::InvalidInput);
-  EXPECT_THROW(solver.set_sources({ExactSource::at_point(2, {1, 0, 0})}), gsp::InvalidInput);
-  EXPECT_THROW(solver.set_sources({ExactSource::at_point(0, {0.5, 0.6, 0})}), gsp::InvalidInput);
-  EXPECT_THROW(solver.set_sources({ExactSource::at_point(0, {-0.1, 0.6, 0.5})}), gsp::InvalidInput);
-  EXPECT_THROW(solver.set_sources({ExactSource::at_point(0, {NAN, 0.5, 0.5})}), gsp::InvalidInput);
+  EXPECT_THROW(solver.set_sources({ExactSource::in_face(2, {1, 0, 0})}), gsp::InvalidInput);
+  EXPECT_THROW(solver.set_sources({ExactSource::in_face(0, {0.5, 0.6, 0})}), gsp::InvalidInput);
+  EXPECT_THROW(solver.set_sources({ExactSource::in_face(0, {-0.1, 0.6, 0.5})}), gsp::InvalidInput);
+  EXPECT_THROW(solver.set_sources({ExactSource::in_face(0, {NAN, 0.5, 0.5})}), gsp::InvalidInput);
   // A failed call keeps the previous source set.
   solver.set_sources({ExactSource::at_vertex(0)});
   EXPECT_THROW(solver.set_sources({ExactSource::at_vertex(7)}), gsp::InvalidInput);

@@ -95,10 +95,10 @@ void ExactGeodesicSolver::set_sources(const std::vector<ExactSource>& sources) {
   for (std::size_t i = 0; i < sources.size(); ++i) {
     const ExactSource& src = sources[i];
     if (src.is_vertex()) {
-      detail::check_vertex_index(src.vertex, s.num_input_vertices);
+      detail::check_vertex_index(src.element, s.num_input_vertices);
     } else {
-      const auto w = detail::checked_barycentric(src.face, s.num_input_faces, src.barycentric);
-      locations[i] = m.to_cgal(src.face, w);
+      const auto w = detail::checked_barycentric(src.element, s.num_input_faces, src.barycentric);
+      locations[i] = m.to_cgal(src.element, w);
     }
   }
   m.isolated_sources.clear();
@@ -109,16 +109,16 @@ void ExactGeodesicSolver::set_sources(const std::vector<ExactSource>& sources) {
   for (std::size_t i = 0; i < sources.size(); ++i) {
     const ExactSource& src = sources[i];
     if (src.is_vertex()) {
-      const Index c = s.vertex_component[src.vertex];
+      const Index c = s.vertex_component[src.element];
       if (c == kInvalidIndex) {
-        m.isolated_sources.push_back(src.vertex);
+        m.isolated_sources.push_back(src.element);
         continue;
       }
-      m.components[c]->paths->add_source_point(VertexIndex(s.vertex_local[src.vertex]));
+      m.components[c]->paths->add_source_point(VertexIndex(s.vertex_local[src.element]));
       m.components[c]->has_sources = true;
     } else {
-      const Index c = s.face_component[src.face];
-      m.components[c]->paths->add_source_point(FaceIndex(s.face_local[src.face]), locations[i]);
+      const Index c = s.face_component[src.element];
+      m.components[c]->paths->add_source_point(FaceIndex(s.face_local[src.element]), locations[i]);
       m.components[c]->has_sources = true;
     }
   }

@@ -8,6 +8,7 @@
 // internally, vertices referenced by no face are tolerated (their distance is +infinity,
 // or 0 for a source), and distances on components without a source are +infinity.
 #include <gsp/mesh.hpp>
+#include <gsp/surface_point.hpp>
 
 #include <array>
 #include <memory>
@@ -16,18 +17,9 @@
 namespace gsp::reference {
 
 // A source: an input vertex, or a point inside an input face given by the barycentric
-// weights of the face's corners 0, 1, 2 (non-negative, summing to 1).
-struct ExactSource {
-  Index vertex = kInvalidIndex;
-  Index face = kInvalidIndex;
-  std::array<double, 3> barycentric{};
-
-  static ExactSource at_vertex(Index v) { return {v, kInvalidIndex, {}}; }
-  static ExactSource at_point(Index f, const std::array<double, 3>& weights) {
-    return {kInvalidIndex, f, weights};
-  }
-  bool is_vertex() const { return vertex != kInvalidIndex; }
-};
+// weights of the face's corners 0, 1, 2 (non-negative, summing to 1 within 1e-9: the
+// reference checks its own, stricter than GSP's gsp::are_barycentric).
+using ExactSource = SurfacePoint;
 
 // Checks and converts the mesh once, then answers any number of source sets. Not thread-safe
 // (one solver per thread).
