@@ -18,18 +18,18 @@ void bind_surface_point(py::module_& m) {
                            "0, 1, 2 (>= 0, summing to 1).")
       .def(py::init([](std::int64_t face, py::object bary) {
              if (face < 0) throw py::value_error("SurfacePoint: face must be >= 0");
-             return SurfacePoint{Index(face), barycentric_from(bary, "SurfacePoint barycentric")};
+             return SurfacePoint::in_face(Index(face), barycentric_from(bary, "SurfacePoint barycentric"));
            }),
            py::arg("face"), py::arg("barycentric"))
-      .def_readonly("face", &SurfacePoint::face)
+      .def_property_readonly("face", [](const SurfacePoint& p) { return p.element; })
       .def_property_readonly("barycentric", [](const SurfacePoint& p) { return py::make_tuple(p.barycentric[0], p.barycentric[1], p.barycentric[2]); })
       .def("__repr__", [](const SurfacePoint& p) {
-        return "SurfacePoint(" + std::to_string(p.face) + ", (" + std::string(py::str(py::float_(p.barycentric[0]))) +
+        return "SurfacePoint(" + std::to_string(p.element) + ", (" + std::string(py::str(py::float_(p.barycentric[0]))) +
                ", " + std::string(py::str(py::float_(p.barycentric[1]))) + ", " +
                std::string(py::str(py::float_(p.barycentric[2]))) + "))";
       })
       .def("__eq__", [](const SurfacePoint& a, const SurfacePoint& b) {
-        return a.face == b.face && a.barycentric == b.barycentric;
+        return a.kind == b.kind && a.element == b.element && a.barycentric == b.barycentric;
       });
 }
 
@@ -41,10 +41,10 @@ bool is_index(const py::handle& h) {
 Source source_from(const py::handle& h, const TriangleMesh& mesh, const char* what) {
   if (py::isinstance<SurfacePoint>(h)) {
     const auto& p = h.cast<const SurfacePoint&>();
-    if (p.face >= mesh.num_faces())
-      throw py::value_error(std::string(what) + ": face " + std::to_string(p.face) + " does not exist (the mesh has " +
+    if (!p.exists_in(mesh))
+      throw py::value_error(std::string(what) + ": face " + std::to_string(p.element) + " does not exist (the mesh has " +
                             std::to_string(mesh.num_faces()) + " faces)");
-    return Source::in_face(p.face, p.barycentric);
+    return Source::at(p);
   }
   if (!is_index(h))
     throw py::value_error(std::string(what) + ": expected a vertex index (int) or a gsp.SurfacePoint, got " +

@@ -1,19 +1,14 @@
 #pragma once
-// gsp.SurfacePoint(face, (b0, b1, b2)) and the conversion of "sources" / "end points"
-// arguments: a vertex index, a SurfacePoint, or a list / 1-D array mixing them.
+// gsp.SurfacePoint(face, (b0, b1, b2)), which is the core's gsp::SurfacePoint bound as it is
+// (Python makes face points; vertices are plain ints), and the conversion of "sources" / "end
+// points" arguments: a vertex index, a SurfacePoint, or a list / 1-D array mixing them.
 #include <gsp/geodesics.hpp>
 
 #include <pybind11/pybind11.h>
 
-#include <array>
 #include <vector>
 
 namespace gsp::python {
-
-struct SurfacePoint {
-  Index face = 0;
-  std::array<double, 3> barycentric{1, 0, 0};
-};
 
 void bind_surface_point(pybind11::module_& m);
 
