@@ -29,9 +29,7 @@ double GeodesicResult::distance_at(const TriangleMesh& mesh, Index face,
                                    std::array<double, 3> bary) const {
   if (face >= face_sources.size() || !face_sources[face].reached())
     return std::numeric_limits<double>::infinity();
-  const Triangle& t = mesh.triangles[face];
-  const Vec3 q = bary[0] * mesh.positions[t[0]] + bary[1] * mesh.positions[t[1]] +
-                 bary[2] * mesh.positions[t[2]];
+  const Vec3 q = SurfacePoint::in_face(face, bary).position(mesh);
   return face_sources[face].sigma + distance(q, face_sources[face].position);
 }
 

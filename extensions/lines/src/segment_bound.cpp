@@ -1,5 +1,7 @@
 #include "segment_bound.hpp"
 
+#include <gsp/surface_point.hpp>
+
 #include <algorithm>
 #include <limits>
 
@@ -11,11 +13,6 @@ struct Piece3 {
   Vec3 a, b;
   Index segment;
 };
-
-Vec3 point_of(const TriangleMesh& mesh, Index f, const std::array<double, 3>& w) {
-  const Triangle& t = mesh.triangles[f];
-  return w[0] * mesh.positions[t[0]] + w[1] * mesh.positions[t[1]] + w[2] * mesh.positions[t[2]];
-}
 
 double segment_distance(Vec3 x, const Piece3& p) {
   const Vec3 ab = p.b - p.a;
@@ -31,7 +28,8 @@ std::size_t raise_to_segments(const TriangleMesh& mesh, const LineSource& source
   std::vector<Piece3> pieces;
   pieces.reserve(source.pieces.size());
   for (const SegmentPiece& p : source.pieces)
-    pieces.push_back({point_of(mesh, p.face, p.start), point_of(mesh, p.face, p.end), p.segment});
+    pieces.push_back({SurfacePoint::in_face(p.face, p.start).position(mesh),
+                      SurfacePoint::in_face(p.face, p.end).position(mesh), p.segment});
   if (pieces.empty()) return 0;
   // Pieces by segment (CSR), so a vertex is first checked against its own segment's pieces.
   std::vector<Index> begin(source.num_segments() + 1, 0), order(pieces.size());

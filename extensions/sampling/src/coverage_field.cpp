@@ -1,5 +1,7 @@
 #include "coverage_field.hpp"
 
+#include <gsp/surface_point.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,11 +29,9 @@ bool CoverageField::clear_of_samples(const LocalField& run, const TriangleMesh& 
   for (std::size_t k = 0; k < run.faces.size(); ++k) {
     const Index f = run.faces[k];
     if (sample_head_[f] < 0 || !near(run, k)) continue;
-    const Triangle& t = mesh.triangles[f];
     const VirtualSource& vs = run.face_sources[k];
     for (std::int32_t e = sample_head_[f]; e >= 0; e = samples_[e].next) {
-      const auto& b = samples_[e].barycentric;
-      const Vec3 p = b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] + b[2] * mesh.positions[t[2]];
+      const Vec3 p = SurfacePoint::in_face(f, samples_[e].barycentric).position(mesh);
       if (vs.sigma + distance(p, vs.position) < radius_) return false;
     }
   }
