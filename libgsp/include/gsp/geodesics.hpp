@@ -23,7 +23,7 @@ namespace gsp {
 // A point source: a surface point (a vertex, or a point inside a face whose barycentric weights
 // must be >= 0 and sum to 1 within 1e-6: gsp::are_barycentric) and an initial distance `offset`
 // added to everything the source reaches. Built on gsp::SurfacePoint so that a source is any
-// surface point plus its offset: s.kind, s.element, s.barycentric are the point's.
+// surface point plus its offset: s.kind, s.element (input order), s.barycentric are the point's.
 struct Source : SurfacePoint {
   double offset = 0;
 
