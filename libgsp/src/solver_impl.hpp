@@ -52,17 +52,19 @@ struct Triangulation {
   template <class Real>
   std::vector<FaceRecord<Real>> initial_records(double scale, const std::vector<std::uint8_t>& kind) const {
     const Real inf = std::numeric_limits<Real>::infinity();
-    std::vector<FaceRecord<Real>> r(triangles().size());
-    for (std::size_t f = 0; f < r.size(); ++f) {
-      const Triangle& t = triangles()[f];
+    const std::vector<Triangle>& tris = triangles();
+    std::vector<FaceRecord<Real>> r;
+    r.reserve(tris.size());   // written once (a sized vector would be zeroed first)
+    for (std::size_t f = 0; f < tris.size(); ++f) {
+      const Triangle& t = tris[f];
       Index tag = detail::kNoSource;
       for (Index i = 0; i < 3; ++i) {
         const std::uint8_t k = kind[t[i]];
         if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
         if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
       }
-      r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
-                               Real(scale * length[3 * f + 2])}, tag};
+      r.push_back({0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
+                                    Real(scale * length[3 * f + 2])}, tag});
     }
     return r;
   }
