@@ -63,7 +63,7 @@ void GeodesicSolver::Impl::build_links(const Connectivity& conn) {
   input.set_direction_bits(std::move(plain));
 }
 
-void GeodesicSolver::Impl::build_delaunay() {
+void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   detail::IntrinsicTriangulation t;
   t.triangles = input.triangles();
   t.length = input.length;
@@ -78,10 +78,20 @@ void GeodesicSolver::Impl::build_delaunay() {
   delaunay = std::make_unique<Triangulation>();
   delaunay->own_triangles = std::move(t.triangles);
   delaunay->length = std::move(t.length);
-  detail::snap_zero_lengths(delaunay->length);
-  delaunay->needs_double = detail::needs_double_lengths(delaunay->length, skipped_face);
-  delaunay->set_direction_bits(std::move(t.ring));
-  delaunay->build_corners(mesh().num_vertices());
+  // Three tables from the flipped faces, two of them apart from the third.
+  Triangulation& d = *delaunay;
+  auto lengths_and_corners = [&] {
+    detail::snap_zero_lengths(d.length);
+    d.needs_double = detail::needs_double_lengths(d.length, skipped_face);
+    d.build_corners(mesh().num_vertices());
+  };
+  auto links = [&] { d.set_direction_bits(std::move(t.ring)); };
+  if (two_threads) {
+    detail::side_by_side(lengths_and_corners, links);
+  } else {
+    lengths_and_corners();
+    links();
+  }
 }
 
 void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
@@ -192,7 +202,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   if (!two || !options.intrinsic_delaunay) {
     analyse_vertices(conn);
     timings.vertex_analysis = lap();
-    if (options.intrinsic_delaunay) build_delaunay();
+    if (options.intrinsic_delaunay) build_delaunay(false);
     timings.delaunay = lap();
   } else {
     detail::side_by_side(
@@ -202,7 +212,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
           timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
         },
         [&] {
-          build_delaunay();
+          build_delaunay(true);   // its last tables on two threads too (the analysis ends first)
           timings.delaunay = lap();
         });
   }

@@ -183,7 +183,7 @@ struct GeodesicSolver::Impl {
   // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
   // triangulation and releases the rest of `conn`.
   void analyse_vertices(Connectivity& conn);
-  void build_delaunay();
+  void build_delaunay(bool two_threads);
   template <class Real>
   GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
                      const GeodesicOptions& options) const;
