@@ -2,7 +2,8 @@
 // persists in a workspace and is put back only where the query touched it. The faces touched
 // are the seeded ones and those the update step reached for the first time (it lists them),
 // so nothing scans the whole mesh.
-#include "query_steps.hpp"
+#include "query_propagate.hpp"
+#include "query_seed.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
 #include "validate_options.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The solver's prepared state (GeodesicSolver::Impl) and the pieces its queries share; internal
 // to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
-// bounded ones, query_steps.hpp holds the seeding and propagation both use.
+// bounded ones; query_seed.hpp and query_propagate.hpp hold the seeding and propagation both use.
 #include "goal_directed.hpp"
 #include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
@@ -191,7 +191,18 @@ struct GeodesicSolver::Impl {
   LocalField run_local(const std::vector<Source>& sources, const GeodesicOptions& options,
                        LocalWorkspace& workspace) const;
 
-  // The steps every query shares (query_steps.hpp). seed(): validates the sources and seeds
+  // A full query's gather (query_gather.hpp): vertex_minima() takes each vertex's smallest
+  // value over its reached faces (returns the number of faces reached); gather() writes the
+  // result in the input's order, the vertex sources' exact values on top.
+  template <class Real>
+  std::size_t vertex_minima(const Triangulation& tri, const FaceRecord<Real>* state, std::vector<Real>& vmin,
+                            std::vector<Index>& vlabel) const;
+  template <class Real>
+  void gather(const Triangulation& tri, const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
+              bool relax, const GeodesicOptions& options, const std::vector<Real>& vmin, std::vector<Index>& vlabel,
+              GeodesicResult& result) const;
+
+  // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): validates the sources and seeds
   // their faces; vertex sources also give their vertex's exact value (vertex_seeds). Faces
   // seeded are appended to `seeded` when given. propagate(): the chosen strategy, then the
   // bridge vertices' rounds; faces reached for the first time are appended to `reached`

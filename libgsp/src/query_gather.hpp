@@ -1,0 +1,134 @@
+#pragma once
+// A full query's last step (after query_seed.hpp and query_propagate.hpp): the per-vertex
+// values from the faces' virtual sources, then the dense result in the input's order (vertex
+// distances and labels with the vertex sources on top, per-face values and virtual sources
+// when asked for). A bounded query gathers its sparse result in local_query.cpp.
+#include "solver_impl.hpp"
+#include "virtual_source.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace gsp {
+
+template <class Real>
+std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const FaceRecord<Real>* state,
+                                                std::vector<Real>& vmin, std::vector<Index>& vlabel) const {
+  // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces,
+  // taken in the propagation's precision (the conversion to model units is monotonic, so the
+  // minimum and its label are those of the converted values). Per block of faces two passes:
+  // the corner distances, branch-free so the compiler vectorises them (an unreached face has
+  // sigma = +inf and gives +inf), then the minima, also without branches: which face wins a
+  // vertex is a coin toss the branch predictor loses.
+  const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
+  const Real inf = std::numeric_limits<Real>::infinity();
+  vmin.assign(nv, inf);
+  vlabel.assign(nv, kInvalidIndex);
+  std::size_t faces_reached = 0;
+  constexpr std::size_t kBlock = 256;
+  Real corner[3 * kBlock];
+  for (std::size_t begin = 0; begin < nf; begin += kBlock) {
+    const std::size_t end = std::min(nf, begin + kBlock);
+    corner_distances(&state[begin], end - begin, corner);
+    for (std::size_t fi = begin; fi < end; ++fi) {
+      const bool reached = state[fi].reached();
+      faces_reached += reached;
+      const Index label = reached ? state[fi].source() : kInvalidIndex;
+      const Triangle& t = tri.triangles()[fi];
+      for (Index i = 0; i < 3; ++i) {
+        const Real d = corner[3 * (fi - begin) + i];
+        const bool better = d < vmin[t[i]];
+        vmin[t[i]] = better ? d : vmin[t[i]];
+        vlabel[t[i]] = better ? label : vlabel[t[i]];
+      }
+    }
+  }
+  return faces_reached;
+}
+
+template <class Real>
+void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Real>* state,
+                                  const std::vector<VertexSeed>& vertex_seeds, bool relax,
+                                  const GeodesicOptions& options, const std::vector<Real>& vmin,
+                                  std::vector<Index>& vlabel, GeodesicResult& result) const {
+  const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
+  // A vertex source's own value is exact and wins ties against the faces; of several sources
+  // at one vertex the smallest value, the first source on ties.
+  std::vector<VertexSeed> seeds = vertex_seeds;
+  std::stable_sort(seeds.begin(), seeds.end(), [](const VertexSeed& a, const VertexSeed& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.value < b.value;
+  });
+  seeds.erase(std::unique(seeds.begin(), seeds.end(),
+                          [](const VertexSeed& a, const VertexSeed& b) { return a.vertex == b.vertex; }),
+              seeds.end());
+  // Results in the input's order, gathered (sequential writes, reads in layout order), then the
+  // few vertex sources on top.
+  const double cutoff = options.max_distance;
+  const double inf_d = std::numeric_limits<double>::infinity();
+  result.vertex_distance.resize(nv);
+  result.vertex_source.resize(nv);
+  for (std::size_t in = 0; in < nv; ++in) {
+    const Index v = maps.vertex_to_layout(Index(in));
+    const double d = double(vmin[v]) * mean_edge;
+    const bool keep = d <= cutoff;
+    result.vertex_distance[in] = keep ? d : inf_d;
+    result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
+  }
+  for (const VertexSeed& vs : seeds) {
+    // Exact (model units) unless a face or an edge found the vertex closer; after relaxation
+    // vmin holds the seed itself rounded to the propagation's precision.
+    if (!(vs.value <= double(vmin[vs.vertex]) * mean_edge * (relax ? 1 + 1e-6 : 1.0))) continue;
+    const Index in = maps.vertex_to_input(vs.vertex);
+    const bool keep = vs.value <= cutoff;
+    result.vertex_distance[in] = keep ? vs.value : inf_d;
+    result.vertex_source[in] = keep ? vs.label : kInvalidIndex;
+  }
+  if (options.want_face_distances) {
+    // On the flipped triangulation an input face's value comes from its corners' distances
+    // (before the cutoff, the vertex sources included), by layout index.
+    std::vector<double> vdist;
+    if (&tri != &input) {
+      vdist.resize(nv);
+      for (std::size_t v = 0; v < nv; ++v) vdist[v] = double(vmin[v]) * mean_edge;
+      for (const VertexSeed& vs : seeds)
+        if (vs.value <= vdist[vs.vertex]) vdist[vs.vertex] = vs.value, vlabel[vs.vertex] = vs.label;
+    }
+    result.face_distance.resize(nf);
+    result.face_source.resize(nf);
+    for (std::size_t in = 0; in < nf; ++in) {
+      const Index fi = maps.face_to_layout(Index(in));
+      double d = std::numeric_limits<double>::infinity();
+      Index label = kInvalidIndex;
+      if (&tri == &input) {
+        const FaceRecord<Real>& st = state[fi];
+        if (st.reached()) d = double(st.dT) * mean_edge, label = st.source();
+      } else {
+        // The propagation ran on other faces: an input face gets the mean of its corners'
+        // distances and the label of its nearest corner.
+        const Triangle& t = mesh().triangles[fi];
+        int best = 0;
+        for (int i = 1; i < 3; ++i)
+          if (vdist[t[i]] < vdist[t[best]]) best = i;
+        const double mean = (vdist[t[0]] + vdist[t[1]] + vdist[t[2]]) / 3;
+        if (std::isfinite(mean) && mean <= cutoff) d = mean, label = vlabel[t[best]];
+      }
+      result.face_distance[in] = d;
+      result.face_source[in] = label;
+    }
+  }
+  if (options.want_face_sources) {
+    result.face_sources.resize(nf);
+    for (std::size_t fi = 0; fi < nf; ++fi) {
+      const FaceRecord<Real>& st = state[fi];
+      if (!st.reached()) continue;
+      VirtualSource& vs = result.face_sources[maps.face_to_input(Index(fi))];
+      vs.position = detail::canonical_to_3d(mesh(), Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
+      vs.sigma = double(st.sigma) * mean_edge;
+      vs.source = st.source();
+    }
+  }
+}
+
+}  // namespace gsp
