@@ -72,7 +72,7 @@ std::vector<TriangleMesh> test_meshes() {
 TEST(CoreLayout, AllLayoutsAreValidAndKeepTheGeometry) {
   for (const TriangleMesh& m : test_meshes()) {
     SCOPED_TRACE(m.num_vertices());
-    for (const Layout& l : {compute_cache_layout(m), random_layout(m, 7), identity_layout(m)}) {
+    for (const Layout& l : {compute_cache_layout(m), spatial_layout(m), random_layout(m, 7), identity_layout(m)}) {
       expect_valid_layout(m, l);
       expect_same_geometry(m, l);
     }
@@ -171,6 +171,19 @@ TEST(CoreLayout, LayoutOfAShuffledGridRecoversLocality) {
   const TriangleMesh optimised = apply_layout(m, compute_cache_layout(m));
   EXPECT_GT(mean_log_neighbour_index_distance(m), 10.0);  // about log2(N) - 2 for a shuffle
   EXPECT_LT(mean_log_neighbour_index_distance(optimised), 3.6);
+}
+
+// The Z-order of a shuffled grid: vertices near in space near in memory again, as local as
+// the clustering's (3.08 against 3.11; the shuffle: 11.15).
+TEST(CoreLayout, SpatialLayoutOfAShuffledGridRecoversLocality) {
+  const TriangleMesh m = apply_layout(test::grid(100), random_layout(test::grid(100), 5));
+  const TriangleMesh ordered = apply_layout(m, spatial_layout(m));
+  EXPECT_LT(mean_log_neighbour_index_distance(ordered), 3.3);
+  EXPECT_GT(mean_log_neighbour_index_distance(m), 10.0);
+  // Deterministic.
+  const Layout a = spatial_layout(m), b = spatial_layout(m);
+  EXPECT_EQ(a.vertex_order, b.vertex_order);
+  EXPECT_EQ(a.face_order, b.face_order);
 }
 
 TEST(CoreLayout, MeanLogNeighbourIndexDistanceOfAStrip) {

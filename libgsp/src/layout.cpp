@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <numeric>
 #include <string>
+#include <utility>
 
 namespace gsp {
 namespace {
@@ -320,6 +322,41 @@ Layout random_layout(const TriangleMesh& mesh, std::uint64_t seed) {
   l.vertex_rank = inverse_permutation(l.vertex_order);
   l.face_rank = inverse_permutation(l.face_order);
   return l;
+}
+
+namespace {
+
+// The 21 low bits of x spread to every third bit (x -> x0 0 0 x1 0 0 x2 ...).
+std::uint64_t spread_bits(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffffULL;
+  x = (x | x << 16) & 0x1f0000ff0000ffULL;
+  x = (x | x << 8) & 0x100f00f00f00f00fULL;
+  x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+  x = (x | x << 2) & 0x1249249249249249ULL;
+  return x;
+}
+
+}  // namespace
+
+Layout spatial_layout(const TriangleMesh& mesh) {
+  const std::size_t nv = mesh.num_vertices();
+  if (nv >= kInvalidIndex) throw InvalidInput("mesh has too many vertices for 32-bit indices");
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 size = box.max - box.min;
+  const double extent = std::max({size.x, size.y, size.z});
+  const double scale = extent > 0 ? double((1u << 21) - 1) / extent : 0.0;
+  // (Morton code, vertex): sorted, the vertices follow a Z-order curve through the box.
+  std::vector<std::pair<std::uint64_t, Index>> key(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const Vec3 q = scale * (mesh.positions[v] - box.min);
+    key[v] = {spread_bits(std::uint64_t(q.x)) | spread_bits(std::uint64_t(q.y)) << 1 | spread_bits(std::uint64_t(q.z)) << 2,
+              Index(v)};
+  }
+  std::sort(key.begin(), key.end());
+  std::vector<Index> order(nv);
+  for (std::size_t i = 0; i < nv; ++i) order[i] = key[i].second;
+  return layout_from_vertex_order(mesh, std::move(order));
 }
 
 Layout identity_layout(const TriangleMesh& mesh) {

@@ -164,7 +164,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   custom_lengths = !options.edge_lengths.empty();
   heuristic = options.heuristic;
   if (options.optimize_layout) {
-    Layout layout = compute_cache_layout(input);
+    Layout layout = options.spatial_layout ? gsp::spatial_layout(input) : compute_cache_layout(input);
     mesh_store = std::make_shared<const TriangleMesh>(apply_layout(input, layout));
     maps = detail::IndexMaps(std::move(layout));
   } else {

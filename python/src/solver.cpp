@@ -197,6 +197,8 @@ one solver in parallel.)");
             SolverOptions options = metric_solver_options(mesh, metric);
             options.intrinsic_delaunay = intrinsic_delaunay;
             options.optimize_layout = layout_from(optimize_layout, mesh);
+            // "auto" is the one-off choice: where it reorders, the cheap Z-order does.
+            options.spatial_layout = py::isinstance<py::str>(optimize_layout);
             py::gil_scoped_release nogil;
             return std::make_unique<Solver>(std::move(mesh), options, !options.edge_lengths.empty());
           }),

@@ -9,6 +9,7 @@ LayoutChoice choose_layout(const std::string& mode, const TriangleMesh& mesh, bo
   if (!one_field) return c.reason = "several fields: the layout pays back", c;
   c.order = order_coherence(mesh);
   c.optimize = !c.order.coherent;
+  c.spatial = c.optimize;
   c.reason = c.optimize ? "one field, the file's order is scattered" : "one field, the file's order is coherent";
   return c;
 }

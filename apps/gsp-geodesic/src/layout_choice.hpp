@@ -12,12 +12,15 @@ namespace gsp::geodesic_app {
 
 struct LayoutChoice {
   bool optimize = true;
+  bool spatial = false;    // the Z-order layout (auto, one field), else the clustering
   OrderCoherence order;    // measured for auto and one field only (else zeros)
   std::string reason;      // for --stats
 };
 
 // `mode`: "auto", "on" or "off". auto: on, except for one field on a file whose own order is
-// coherent (gsp::order_coherence).
+// coherent (gsp::order_coherence); where auto reorders for one field, the Z-order layout (a
+// sort of the positions) does. on: the clustering (what several fields get: it pays back over
+// many queries, and a field is then identical to its --separate twin).
 LayoutChoice choose_layout(const std::string& mode, const TriangleMesh& mesh, bool one_field);
 
 }  // namespace gsp::geodesic_app

@@ -128,6 +128,7 @@ void run(cli::Context& ctx, const Options& o) {
     const LayoutChoice layout = choose_layout(o.no_layout ? "off" : o.layout, in.mesh, !(o.separate || o.matrix));
     SolverOptions so;
     so.optimize_layout = layout.optimize;
+    so.spatial_layout = layout.spatial;
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     so.edge_lengths = metric_lengths(ctx, metric, in);
@@ -155,7 +156,7 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["precision_used"] = solver.resolved_precision(precision) == Precision::single ? "single" : "double";
     ctx.settings()["heuristic"] = o.heuristic;
     ctx.settings()["step"] = o.f;
-    ctx.settings()["layout"] = so.optimize_layout ? "bottom-up clustering" : "input order";
+    ctx.settings()["layout"] = !so.optimize_layout ? "input order" : so.spatial_layout ? "z-order" : "bottom-up clustering";
     ctx.settings()["layout_reason"] = layout.reason;
     if (layout.order.random_log_gap > 0) {
       ctx.operations()["file_order_log_gap"] = layout.order.file_log_gap;

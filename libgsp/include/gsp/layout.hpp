@@ -23,6 +23,10 @@ Layout compute_cache_layout(const TriangleMesh& mesh);
 // A random layout (for benchmarks showing what the optimisation buys).
 Layout random_layout(const TriangleMesh& mesh, std::uint64_t seed);
 
+// Vertices along a Z-order (Morton) curve through the bounding box, faces by their smallest
+// new vertex: a sort of the positions' interleaved bits, no graph work (docs/layout.md).
+Layout spatial_layout(const TriangleMesh& mesh);
+
 // The identity layout.
 Layout identity_layout(const TriangleMesh& mesh);
 
