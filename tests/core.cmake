@@ -5,6 +5,8 @@ gsp_test(core_weld SOURCES core_weld.cpp DEPS gsp::core)
 gsp_test(core_layout SOURCES core_layout.cpp DEPS gsp::core)
 gsp_test(core_intrinsic SOURCES core_intrinsic.cpp DEPS gsp::core)
 gsp_test(core_surface_point SOURCES core_surface_point.cpp DEPS gsp::core)
+gsp_test(core_side_by_side SOURCES core_side_by_side.cpp DEPS gsp::core Threads::Threads)
+target_include_directories(core_side_by_side PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)
 gsp_test(core_shared_meshes SOURCES core_shared_meshes.cpp DEPS gsp::core gsp::io)
 
 # Not a test: prints the layout's locality and run time on every shared mesh (docs/layout.md).
