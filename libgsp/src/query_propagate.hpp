@@ -52,17 +52,16 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
         break;
       case Strategy::speed_limiter_postpone: detail::run_speed_limiter(step, queue, f, stats, true); break;
       case Strategy::static_postpone:
-        detail::run_postpone(step, queue, Postpone::fixed, f, f0, f1, stats);
-        break;
       case Strategy::dynamic_postpone:
-        detail::run_postpone(step, queue, Postpone::dynamic, f, f0, f1, stats);
-        break;
       case Strategy::hybrid_postpone:
-        detail::run_postpone(step, queue, Postpone::hybrid, f, f0, f1, stats);
+      case Strategy::bfs: {
+        const Postpone rule = options.strategy == Strategy::static_postpone    ? Postpone::fixed
+                              : options.strategy == Strategy::dynamic_postpone ? Postpone::dynamic
+                              : options.strategy == Strategy::hybrid_postpone  ? Postpone::hybrid
+                                                                               : Postpone::none;
+        detail::run_postpone(step, queue, rule, f, f0, f1, stats);
         break;
-      case Strategy::bfs:
-        detail::run_postpone(step, queue, Postpone::none, f, f0, f1, stats);
-        break;
+      }
       case Strategy::priority_queue: detail::run_priority_queue(step, queue, stats); break;
     }
   };

@@ -94,9 +94,8 @@ struct Triangulation {
 
   // Takes the plain radial links (halfedge indices) and adds the direction bits in place.
   void set_direction_bits(std::vector<Index>&& plain_ring) {
-    auto dir = [&](Index h) {
-      return triangles()[face_of(h)][corner_of(h)] < triangles()[face_of(h)][corner_of(next_halfedge(h))];
-    };
+    const std::vector<Triangle>& tris = triangles();
+    auto dir = [&](Index h) { return tris[face_of(h)][corner_of(h)] < tris[face_of(h)][corner_of(next_halfedge(h))]; };
     ring = std::move(plain_ring);
     // Links before h already carry bits: masked, every entry reads as its plain index.
     for (Index h = 0; h < Index(ring.size()); ++h) {
@@ -110,12 +109,13 @@ struct Triangulation {
 
   void build_corners(std::size_t num_vertices) {
     corner_begin.assign(num_vertices + 1, 0);
-    for (const Triangle& t : triangles())
+    const std::vector<Triangle>& tris = triangles();
+    for (const Triangle& t : tris)
       for (Index v : t) ++corner_begin[v + 1];
     for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
-    corners.resize(3 * triangles().size());
+    corners.resize(3 * tris.size());
     std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
-    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[triangles()[face_of(c)][corner_of(c)]]++] = c;
+    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[tris[face_of(c)][corner_of(c)]]++] = c;
   }
 };
 
