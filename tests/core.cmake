@@ -15,3 +15,5 @@ target_link_libraries(gsp-layout-report PRIVATE gsp::core gsp::io)
 target_include_directories(gsp-layout-report PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_compile_definitions(gsp-layout-report PRIVATE
   GSP_DATA_DIR="${GSP_DATA_DIR}" GSP_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+gsp_test(core_parallel_passes SOURCES core_parallel_passes.cpp DEPS gsp::core Threads::Threads)
+target_include_directories(core_parallel_passes PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)

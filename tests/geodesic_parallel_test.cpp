@@ -30,26 +30,33 @@ std::vector<Source> spread_sources(const TriangleMesh& m, int n, std::uint64_t s
 }
 
 // One source on an irregular planar triangulation: the straight-line distance at every vertex,
-// whatever the thread count (every unfolding agrees, so the order cannot matter).
+// whatever the thread count (every unfolding agrees, and on several threads a tie between two
+// paths goes to the straighter one). One thread: within 1e-5 of 1 + d. Several: within 5e-5
+// (a tie the float rounding of a long chain of unfoldings hides still goes either way: the
+// worst of 2400 runs of this test's queries was 1.9e-5). 20,000 faces: the per-face and
+// per-vertex passes split on two threads too.
 TEST(ParallelPropagation, ExactOnAPlaneForAnyThreadCount) {
-  const TriangleMesh m = jittered_grid(60, 0.2, 3);
+  const TriangleMesh m = jittered_grid(100, 0.2, 3);
   const GeodesicSolver solver(m);
-  for (Index s : {Index(0), Index(1830)}) {
+  for (Index s : {Index(0), Index(5100)}) {
     for (unsigned threads : {1u, 2u, 3u, 8u}) {
       GeodesicOptions o;
       o.threads = threads;
       const GeodesicResult r = solver.compute({Source::at_vertex(s)}, o);
       for (std::size_t v = 0; v < m.num_vertices(); ++v) {
         const double d = distance(m.positions[v], m.positions[s]);
-        ASSERT_NEAR(r.vertex_distance[v], d, 1e-5 * (1 + d)) << "vertex " << v << ", " << threads << " threads";
+        ASSERT_NEAR(r.vertex_distance[v], d, (threads == 1 ? 1e-5 : 5e-5) * (1 + d))
+            << "vertex " << v << ", " << threads << " threads";
       }
     }
   }
 }
 
 // Every face reached, every vertex within a small relative difference of one thread (the order
-// changes which virtual source wins a few faces, mostly next to the bisectors between
-// sources: up to 2.4% there), labels the same almost everywhere.
+// changes which virtual source wins a few faces: up to 2.5% at a vertex), the mean difference
+// under the stated bound of 0.2% (docs/performance.md; measured 0.04-0.1% over 60 runs with
+// fertility's faces in 64-face stripes, the most messages a mesh gets), labels the same almost
+// everywhere.
 TEST(ParallelPropagation, MatchesOneThreadOnARealMesh) {
   const TriangleMesh m = fertility();
   const GeodesicSolver solver(m);
@@ -72,7 +79,7 @@ TEST(ParallelPropagation, MatchesOneThreadOnARealMesh) {
         if (a.vertex_distance[v] > 0) sum += rel, worst = std::max(worst, rel);
         same_label += a.vertex_source[v] == b.vertex_source[v];
       }
-      EXPECT_LT(sum / double(m.num_vertices()), 1e-3);
+      EXPECT_LT(sum / double(m.num_vertices()), 2e-3);
       EXPECT_LT(worst, 0.05);
       EXPECT_GT(double(same_label) / double(m.num_vertices()), 0.99);
     }

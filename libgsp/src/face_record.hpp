@@ -5,6 +5,8 @@
 // is recomputed from the three lengths — a division and a square root are cheaper than the
 // cache misses that tables of precomputed constants cost (measured: 36% of the time stalled on
 // a per-halfedge table load before this layout).
+#include "state_allocator.hpp"
+
 #include <gsp/heuristic.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/types.hpp>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace gsp::detail {
 
@@ -43,6 +46,10 @@ struct FaceRecord {
     return std::uint8_t(((tag >> (26 + i)) & 1u) | (((tag >> (29 + i)) & 1u) << 1));
   }
 };
+
+// A query's face records.
+template <class Real>
+using RecordArray = std::vector<FaceRecord<Real>, StateAllocator<FaceRecord<Real>>>;
 
 // The frames of a face (gsp/intrinsic/face_frame.hpp), shared with the extensions.
 using intrinsic::canonical_corner2;

@@ -62,7 +62,9 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
                                          const GeodesicOptions& options) const {
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const double scale = 1.0 / mean_edge;
-  std::vector<FaceRecord<Real>> state = take_state<Real>(tri);   // this query's copy
+  // Targeted runs stop early on one thread; the others run every pass on `threads`.
+  const unsigned threads = options.targets.empty() ? query_threads(options, nf) : 1;
+  detail::RecordArray<Real> state = take_state<Real>(tri, threads);   // this query's copy
 
   GeodesicResult result;
   result.stats.mean_edge_length = mean_edge;
@@ -84,7 +86,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
 
   std::vector<Real> vmin;
   std::vector<Index> vlabel;
-  result.stats.faces_reached = vertex_minima<Real>(tri, state.data(), vmin, vlabel);
+  result.stats.faces_reached = vertex_minima<Real>(tri, state.data(), vmin, vlabel, threads);
   // A targeted run stops once its targets are final: a resumed propagation would not.
   const bool relax = !goal && options.vertex_relaxation;
   if (relax) {
@@ -92,15 +94,15 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     for (const VertexSeed& vs : vertex_seeds)
       if (Real(vs.value * scale) < vmin[vs.vertex])
         vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
-    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats);
+    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, threads);
   }
   // Last on the values: nothing below the straight line (straight_line_bound.hpp), in layout
   // order (positions and values read in sequence).
   if (options.straight_line_bound && !custom_lengths)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
         nv, nullptr, mesh().positions, vmin.data(), vlabel.data(), mean_edge, true,
-        detail::source_points(mesh(), maps, sources));
-  gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result);
+        detail::source_points(mesh(), maps, sources), threads);
+  gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads);
   return_state(std::move(state));
   return result;
 }

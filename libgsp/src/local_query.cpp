@@ -16,7 +16,7 @@ namespace gsp {
 
 template <class Real>
 struct LocalBuffers {
-  std::vector<FaceRecord<Real>> state;   // pristine outside the last query's faces
+  detail::RecordArray<Real> state;   // pristine outside the last query's faces
   std::vector<QueueEntry<Real>> queue;
 };
 

@@ -1,11 +1,11 @@
 #pragma once
 // Parallel propagation on CPU threads (paper Sections 4.2 and 5.7, done by ownership instead of
-// atomics): the faces, in the cache layout's order, are cut into one contiguous block per
-// thread; each thread runs the speed limiter on the faces it owns and sends the update steps
-// that cross into another block to that block's owner as messages (RemoteStep: the unfolded
+// atomics): the faces, in the cache layout's order, are cut into stripes dealt to the threads
+// in turn; each thread runs the speed limiter on the faces it owns and sends the update steps
+// that cross into another thread's stripe to its owner as messages (RemoteStep: the unfolded
 // source, everything the owner needs to run the step itself). Every face record is written by
-// one thread only, so no record needs an atomic; the layout keeps the blocks compact, so few
-// steps cross. Label-correcting like the sequential strategies: the fixed point is the same up
+// one thread only, so no record needs an atomic; the layout keeps the stripes compact, so few
+// steps cross. The threads keep their rounds within one of each other. Label-correcting like the sequential strategies: the fixed point is the same up
 // to GSP's order effects (a different order can let a different virtual source win a face).
 //
 // Idle threads sleep on a condition variable (no spinning); the run ends when every thread is
@@ -24,20 +24,46 @@ namespace gsp::detail {
 // on one thread (the caller already uses the cores).
 bool& inside_parallel_region();
 
+// Faces per ownership stripe: 2^stripe_shift(). Stripes of a coherent layout are compact
+// patches; dealt in turn, every thread owns patches all over the mesh, so a front from one
+// source reaches every thread's faces after a few rings, and a front a few hundred faces long
+// crosses enough patches to share its work evenly. Smaller stripes send more steps as messages;
+// 2^10 to 2^14 faces ran equally fast at 2.2M vertices (docs/performance.md). Small meshes
+// (forced threads) get at least 64 stripes per thread.
+inline unsigned stripe_shift(std::size_t num_faces, unsigned threads) {
+  unsigned shift = 6;
+  while (shift < 12 && (std::size_t(64) * threads << (shift + 1)) <= num_faces) ++shift;
+  return shift;
+}
+
 template <class Real>
 void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, const Index* ring,
-                                const ProbeTable<Real>& probe, Real expand_limit, std::vector<QueueEntry<Real>>& seeds,
-                                Real f, unsigned threads, PropagationStats& stats) {
-  const Index chunk = Index((num_faces + threads - 1) / threads);
+                                const ProbeTable<Real>& probe,
+                                Real expand_limit, std::vector<QueueEntry<Real>>& seeds, Real f, unsigned threads,
+                                PropagationStats& stats, bool postpone = false, bool adaptive = false) {
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const unsigned shift = stripe_shift(num_faces, threads);
   struct Shared {
     std::mutex m;
     std::condition_variable cv;
     std::vector<std::vector<RemoteStep<Real>>> inbox;
     std::vector<std::atomic<bool>> mail;
+    // The limit of the last round each thread has finished (infinity while idle): a thread
+    // starts its next round only when every other one has finished the round it has just
+    // finished, so the threads walk the front in step, as one sequential run would, instead of
+    // one racing ahead on distances the other is about to lower.
+    std::vector<std::atomic<Real>> finished;
+    // The adaptive switch to postponing (gsp/intrinsic/speed_limiter.hpp), taken by all threads
+    // once one of them sees the second front.
+    std::atomic<bool> postpone{false};
+    std::atomic<std::uint64_t> ahead{0}, expanded{0};   // the switch's counts over all threads
     unsigned idle = 0;
     bool done = false;
-    explicit Shared(unsigned n) : inbox(n), mail(n) {}
+    explicit Shared(unsigned n) : inbox(n), mail(n), finished(n) {
+      for (auto& x : finished) x.store(-std::numeric_limits<Real>::infinity());   // until each thread starts
+    }
   } shared(threads);
+  shared.postpone.store(postpone);
   std::vector<PropagationStats> local_stats(threads);
 
   auto worker = [&](unsigned me) {
@@ -45,11 +71,12 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     PropagationStats& st = local_stats[me];
     UpdateStep<Real, true> step(faces, ring, probe, expand_limit, st);
     std::vector<std::vector<RemoteStep<Real>>> outbox(threads);
-    step.partition(Index(me) * chunk, std::min<Index>(Index(num_faces), Index(me + 1) * chunk), chunk, &outbox);
+    step.partition(Index(me), Index(threads), shift, &outbox);
     std::vector<QueueEntry<Real>> a, b;
     for (const QueueEntry<Real>& e : seeds)
-      if (face_of(e.halfedge) / chunk == me) a.push_back(e);
+      if (step.owner_of(face_of(e.halfedge)) == me) a.push_back(e);
     Real limit = min_key(a) + f;
+    shared.finished[me].store(limit - f, std::memory_order_release);
     auto push = [&](const QueueEntry<Real>& n) {
       ++st.enqueued;
       if (n.dT < limit) a.push_back(n); else b.push_back(n);
@@ -77,25 +104,67 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
       for (const RemoteStep<Real>& m : mail) step.apply(m, push);
       mail.clear();
     };
+    auto has_mail = [&] { return shared.mail[me].load(std::memory_order_acquire); };
+    std::uint64_t ahead = 0, expanded = 0;   // this round's share of the switch's counts
+    // Every other thread is idle or has finished its rounds up to `upto`.
+    auto others_finished = [&](Real upto) {
+      for (unsigned k = 0; k < threads; ++k)
+        if (k != me && shared.finished[k].load(std::memory_order_acquire) < upto) return false;
+      return true;
+    };
     for (;;) {
-      while (!a.empty()) {
-        ++st.iterations;
+      // The round: `a` grows while it is walked, and with the mail's entries below the limit.
+      const bool postponing = shared.postpone.load(std::memory_order_relaxed);
+      do {
         for (std::size_t i = 0; i < a.size(); ++i) {
+          if (i + intrinsic::kPrefetchDistance < a.size()) step.prefetch(a[i + intrinsic::kPrefetchDistance]);
           const QueueEntry<Real> e = a[i];   // push() may grow `a`
+          if (postponing && !(e.dT < limit)) {   // deferred and still beyond the limit: deferred again
+            if (step.is_stale(e)) {
+              ++st.stale_skipped;
+            } else {
+              ++st.postponed;
+              b.push_back(e);
+            }
+            continue;
+          }
+          ahead += !(e.dT < limit);
+          ++expanded;
           step.expand(e, push);
-          if ((i & 1023) == 1023) {   // keep the neighbours fed and read what they sent
+          if ((i & 255) == 255) {   // keep the neighbours fed and read what they sent
             flush();
-            if (shared.mail[me].load(std::memory_order_acquire)) take_mail();
+            if (has_mail()) take_mail();
           }
         }
         a.clear();
-        std::swap(a, b);
-        // The next round's limit, at least past the nearest queued entry (messages can arrive
-        // far ahead of this thread's own front).
-        limit = std::max(limit + f, min_key(a) + f);
+        flush();
+        if (has_mail()) take_mail();
+        // Wait for the others to finish this round, reading their mail meanwhile (it may
+        // belong to this round).
+        shared.finished[me].store(limit, std::memory_order_release);
+        for (unsigned spins = 0; a.empty() && !b.empty() && !others_finished(limit - f); ++spins) {
+          if (has_mail()) take_mail();
+          else if (spins % 64 == 63) std::this_thread::yield();
+        }
+      } while (!a.empty());
+      ++st.iterations;
+      if (adaptive && !postponing) {
+        const std::uint64_t all_ahead = shared.ahead += ahead, all_expanded = shared.expanded += expanded;
+        ahead = expanded = 0;
+        if (all_expanded >= intrinsic::kSwitchMinExpanded &&
+            double(all_ahead) > intrinsic::kSwitchAheadFraction * double(all_expanded))
+          shared.postpone.store(true, std::memory_order_relaxed);
       }
-      flush();
+      if (!b.empty()) {
+        // The next round: every deferred entry, the limit at least past the nearest of them
+        // (messages can arrive far ahead of this thread's own front).
+        limit = std::max(limit, min_key(b)) + f;
+        std::swap(a, b);
+        continue;
+      }
+      // Nothing left here: idle until mail comes or every thread is idle.
       std::unique_lock<std::mutex> lock(shared.m);
+      shared.finished[me].store(inf, std::memory_order_release);
       if (shared.inbox[me].empty()) {
         ++shared.idle;
         bool all_empty = true;
@@ -109,10 +178,13 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
         if (shared.done) return;
         --shared.idle;
       }
+      // Back in the walk: the others hold their next round while the mail is read and the
+      // round it starts at is known.
+      shared.finished[me].store(-inf, std::memory_order_release);
       lock.unlock();
       take_mail();
-      // Entries the mail produced: start a round at the nearest.
       limit = min_key(a.empty() ? b : a) + f;
+      shared.finished[me].store(limit - f, std::memory_order_release);
       for (std::size_t i = 0; i < b.size();)
         if (b[i].dT < limit) a.push_back(b[i]), b[i] = b.back(), b.pop_back(); else ++i;
     }
@@ -131,8 +203,10 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     stats.face_updates += s.face_updates;
     stats.enqueued += s.enqueued;
     stats.stale_skipped += s.stale_skipped;
+    stats.postponed += s.postponed;
     stats.iterations = std::max(stats.iterations, s.iterations);
   }
+  stats.switched_to_postpone = stats.switched_to_postpone || (shared.postpone.load() && !postpone);
 }
 
 }  // namespace gsp::detail

@@ -7,6 +7,7 @@
 #include "virtual_source.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -15,7 +16,8 @@ namespace gsp {
 
 template <class Real>
 std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const FaceRecord<Real>* state,
-                                                std::vector<Real>& vmin, std::vector<Index>& vlabel) const {
+                                                std::vector<Real>& vmin, std::vector<Index>& vlabel,
+                                                unsigned threads) const {
   // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces,
   // taken in the propagation's precision (the conversion to model units is monotonic, so the
   // minimum and its label are those of the converted values). Per block of faces two passes:
@@ -24,27 +26,57 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
   // vertex is a coin toss the branch predictor loses.
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const Real inf = std::numeric_limits<Real>::infinity();
-  vmin.assign(nv, inf);
-  vlabel.assign(nv, kInvalidIndex);
-  std::size_t faces_reached = 0;
-  constexpr std::size_t kBlock = 256;
-  Real corner[3 * kBlock];
-  for (std::size_t begin = 0; begin < nf; begin += kBlock) {
-    const std::size_t end = std::min(nf, begin + kBlock);
-    corner_distances(&state[begin], end - begin, corner);
-    for (std::size_t fi = begin; fi < end; ++fi) {
-      const bool reached = state[fi].reached();
-      faces_reached += reached;
-      const Index label = reached ? state[fi].source() : kInvalidIndex;
-      const Triangle& t = tri.triangles()[fi];
-      for (Index i = 0; i < 3; ++i) {
-        const Real d = corner[3 * (fi - begin) + i];
-        const bool better = d < vmin[t[i]];
-        vmin[t[i]] = better ? d : vmin[t[i]];
-        vlabel[t[i]] = better ? label : vlabel[t[i]];
+  auto scatter = [&](std::size_t first, std::size_t last, Real* dmin, Index* label_of) {
+    std::fill(dmin, dmin + nv, inf);
+    std::fill(label_of, label_of + nv, kInvalidIndex);
+    std::size_t reached_here = 0;
+    constexpr std::size_t kBlock = 256;
+    Real corner[3 * kBlock];
+    for (std::size_t begin = first; begin < last; begin += kBlock) {
+      const std::size_t end = std::min(last, begin + kBlock);
+      corner_distances(&state[begin], end - begin, corner);
+      for (std::size_t fi = begin; fi < end; ++fi) {
+        const bool reached = state[fi].reached();
+        reached_here += reached;
+        const Index label = reached ? state[fi].source() : kInvalidIndex;
+        const Triangle& t = tri.triangles()[fi];
+        for (Index i = 0; i < 3; ++i) {
+          const Real d = corner[3 * (fi - begin) + i];
+          const bool better = d < dmin[t[i]];
+          dmin[t[i]] = better ? d : dmin[t[i]];
+          label_of[t[i]] = better ? label : label_of[t[i]];
+        }
       }
     }
-  }
+    return reached_here;
+  };
+  vmin.resize(nv);
+  vlabel.resize(nv);
+  const unsigned parts = detail::ranges_used(threads, nf);
+  if (parts == 1) return scatter(0, nf, vmin.data(), vlabel.data());
+  // Several threads: each takes a range of faces into minima of its own (the first into the
+  // result), then the minima are merged per vertex, an earlier range winning ties: the same
+  // values and labels as one thread.
+  std::vector<std::vector<Real>> part_min(parts - 1);
+  std::vector<std::vector<Index>> part_label(parts - 1);
+  std::atomic<std::size_t> faces_reached{0};
+  detail::for_ranges(parts, nf, [&](std::size_t begin, std::size_t end, unsigned part) {
+    Real* dmin = vmin.data();
+    Index* label_of = vlabel.data();
+    if (part > 0) {
+      part_min[part - 1].resize(nv), part_label[part - 1].resize(nv);
+      dmin = part_min[part - 1].data(), label_of = part_label[part - 1].data();
+    }
+    faces_reached += scatter(begin, end, dmin, label_of);
+  });
+  detail::for_ranges(threads, nv, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t k = 0; k + 1 < parts; ++k)
+      for (std::size_t v = begin; v < end; ++v) {
+        const bool better = part_min[k][v] < vmin[v];
+        vmin[v] = better ? part_min[k][v] : vmin[v];
+        vlabel[v] = better ? part_label[k][v] : vlabel[v];
+      }
+  });
   return faces_reached;
 }
 
@@ -52,7 +84,7 @@ template <class Real>
 void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Real>* state,
                                   const std::vector<VertexSeed>& vertex_seeds, bool relax,
                                   const GeodesicOptions& options, const std::vector<Real>& vmin,
-                                  std::vector<Index>& vlabel, GeodesicResult& result) const {
+                                  std::vector<Index>& vlabel, GeodesicResult& result, unsigned threads) const {
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   // A vertex source's own value is exact and wins ties against the faces; of several sources
   // at one vertex the smallest value, the first source on ties.
@@ -69,13 +101,15 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
   const double inf_d = std::numeric_limits<double>::infinity();
   result.vertex_distance.resize(nv);
   result.vertex_source.resize(nv);
-  for (std::size_t in = 0; in < nv; ++in) {
-    const Index v = maps.vertex_to_layout(Index(in));
-    const double d = double(vmin[v]) * mean_edge;
-    const bool keep = d <= cutoff;
-    result.vertex_distance[in] = keep ? d : inf_d;
-    result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
-  }
+  detail::for_ranges(threads, nv, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (std::size_t in = begin; in < end; ++in) {
+      const Index v = maps.vertex_to_layout(Index(in));
+      const double d = double(vmin[v]) * mean_edge;
+      const bool keep = d <= cutoff;
+      result.vertex_distance[in] = keep ? d : inf_d;
+      result.vertex_source[in] = keep ? vlabel[v] : kInvalidIndex;
+    }
+  });
   for (const VertexSeed& vs : seeds) {
     // Exact (model units) unless a face or an edge found the vertex closer; after relaxation
     // vmin holds the seed itself rounded to the propagation's precision.

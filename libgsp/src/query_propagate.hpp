@@ -10,16 +10,16 @@
 
 namespace gsp {
 
-// The thread count of one propagation (GeodesicOptions::threads). Automatic: parallel for big
-// meshes with sources spread over every thread's block (kParallelMinSeedsPerThread seed entries each);
-// a front from a few sources starts in one block and the others would mostly wait.
-inline unsigned propagation_threads(const GeodesicOptions& options, std::size_t num_faces, std::size_t num_seeds) {
+// The thread count of a full query (GeodesicOptions::threads). Automatic: every hardware
+// thread on meshes of kParallelMinFaces faces or more, outside an already parallel caller
+// (compute_many's pool). The threads walk one front in step (parallel_propagation.hpp), so one
+// source pays as well as many (docs/performance.md).
+inline unsigned query_threads(const GeodesicOptions& options, std::size_t num_faces) {
   if (options.threads > 0) return options.threads;
-  if (num_faces < kParallelMinFaces || num_seeds < 2 * kParallelMinSeedsPerThread || detail::inside_parallel_region())
-    return 1;
+  if (num_faces < kParallelMinFaces || detail::inside_parallel_region()) return 1;
   // Asked once: glibc reads /sys for it, which costs more than a small bounded query.
   static const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-  return num_seeds >= kParallelMinSeedsPerThread * hardware ? hardware : 1;
+  return hardware;
 }
 
 template <class Real>
@@ -34,16 +34,19 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
   step.collect_reached(reached, every_update);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
-  const unsigned threads = goal || reached ? 1 : propagation_threads(options, mesh().num_faces(), queue.size());
+  const unsigned threads = goal || reached ? 1 : query_threads(options, mesh().num_faces());
   const bool parallel = threads > 1 && !goal && !reached &&
-                        (options.strategy == Strategy::speed_limiter || options.strategy == Strategy::hybrid_postpone);
+                        (options.strategy == Strategy::speed_limiter ||
+                         options.strategy == Strategy::speed_limiter_postpone ||
+                         options.strategy == Strategy::hybrid_postpone);
   auto propagate = [&] {
     using detail::Postpone;
     if (goal) return detail::run_targeted(step, queue, *goal, stats);
     if (parallel) {
       detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
                                          limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
-                                         stats);
+                                         stats, options.strategy == Strategy::speed_limiter_postpone,
+                                         options.strategy == Strategy::speed_limiter);
       return;
     }
     switch (options.strategy) {
@@ -147,7 +150,7 @@ template <class Real>
 void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const GeodesicOptions& options,
                                           FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
                                           std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                                          PropagationStats& stats) const {
+                                          PropagationStats& stats, unsigned threads) const {
   const double scale = 1.0 / mean_edge;
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale)
                                                          : std::numeric_limits<Real>::infinity();
@@ -157,7 +160,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
     std::size_t relaxed = 0;
     const std::vector<Index> lowered = detail::relax_along_edges<Real>(
         input.triangles(), input.length, scale, skipped_face, input.corner_begin, input.corners, from, limit,
-        Real(kPseudoSourceGain), vmin, vlabel, relaxed);
+        Real(kPseudoSourceGain), vmin, vlabel, relaxed, nullptr, threads);
     stats.relaxed_vertices += relaxed;
     if (lowered.empty() || round >= kMaxRelaxationRounds) return;
     ++stats.relaxation_rounds;

@@ -5,6 +5,7 @@
 #include "goal_directed.hpp"
 #include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
+#include "parallel_ranges.hpp"
 #include "propagation.hpp"
 
 #include <gsp/connectivity.hpp>
@@ -44,28 +45,30 @@ struct Triangulation {
 
   mutable std::atomic<bool> float_started{false}, double_started{false};   // a full query began
   mutable std::once_flag float_once, double_once;
-  mutable std::vector<FaceRecord<float>> records_float;
-  mutable std::vector<FaceRecord<double>> records_double;
+  mutable detail::RecordArray<float> records_float;
+  mutable detail::RecordArray<double> records_double;
 
   // The per-face records every query starts from (lengths, flat and saddle corners, nothing
-  // reached).
+  // reached); `threads` fill (and fault in) one part each.
   template <class Real>
-  std::vector<FaceRecord<Real>> initial_records(double scale, const std::vector<std::uint8_t>& kind) const {
+  detail::RecordArray<Real> initial_records(double scale, const std::vector<std::uint8_t>& kind,
+                                            unsigned threads = 1) const {
     const Real inf = std::numeric_limits<Real>::infinity();
     const std::vector<Triangle>& tris = triangles();
-    std::vector<FaceRecord<Real>> r;
-    r.reserve(tris.size());   // written once (a sized vector would be zeroed first)
-    for (std::size_t f = 0; f < tris.size(); ++f) {
-      const Triangle& t = tris[f];
-      Index tag = detail::kNoSource;
-      for (Index i = 0; i < 3; ++i) {
-        const std::uint8_t k = kind[t[i]];
-        if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
-        if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
+    detail::RecordArray<Real> r(tris.size());   // uninitialised: written once below
+    detail::for_ranges(threads, tris.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+      for (std::size_t f = begin; f < end; ++f) {
+        const Triangle& t = tris[f];
+        Index tag = detail::kNoSource;
+        for (Index i = 0; i < 3; ++i) {
+          const std::uint8_t k = kind[t[i]];
+          if (k == detail::kFlatVertex || k == detail::kConvexVertex) tag |= detail::kFlatCorner0 << i;
+          if (k == detail::kSaddleVertex || k == detail::kConvexVertex) tag |= detail::kSaddleCorner0 << i;
+        }
+        r[f] = {0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
+                                 Real(scale * length[3 * f + 2])}, tag};
       }
-      r.push_back({0, 0, inf, inf, {Real(scale * length[3 * f]), Real(scale * length[3 * f + 1]),
-                                    Real(scale * length[3 * f + 2])}, tag});
-    }
+    });
     return r;
   }
 
@@ -73,14 +76,15 @@ struct Triangulation {
   // the second on, a kept copy of the records is copied (a copy is cheaper than a build, and
   // a one-shot run never holds the records twice: 32 bytes per face less at its peak).
   template <class Real>
-  void fill_state(std::vector<FaceRecord<Real>>& state, double scale, const std::vector<std::uint8_t>& kind) const {
+  void fill_state(detail::RecordArray<Real>& state, double scale, const std::vector<std::uint8_t>& kind,
+                  unsigned threads = 1) const {
     constexpr bool single = std::is_same_v<Real, float>;
     std::atomic<bool>& started = single ? float_started : double_started;
     if (!started.exchange(true)) {
-      state = initial_records<Real>(scale, kind);
+      state = initial_records<Real>(scale, kind, threads);
       return;
     }
-    const auto& records = [&]() -> const std::vector<FaceRecord<Real>>& {
+    const auto& records = [&]() -> const detail::RecordArray<Real>& {
       if constexpr (single) {
         std::call_once(float_once, [&] { records_float = initial_records<float>(scale, kind); });
         return records_float;
@@ -89,7 +93,11 @@ struct Triangulation {
         return records_double;
       }
     }();
-    state.assign(records.begin(), records.end());
+    state.resize(records.size());
+    detail::for_ranges(threads, records.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+      std::copy(records.begin() + std::ptrdiff_t(begin), records.begin() + std::ptrdiff_t(end),
+                state.begin() + std::ptrdiff_t(begin));
+    });
   }
 
   // Takes the plain radial links (halfedge indices) and adds the direction bits in place.
@@ -149,22 +157,22 @@ struct GeodesicSolver::Impl {
   // queries (compute_many) keeps at most one extra buffer.
   struct SpareState {
     std::mutex mutex;
-    std::vector<FaceRecord<float>> single;
-    std::vector<FaceRecord<double>> twice;
+    detail::RecordArray<float> single;
+    detail::RecordArray<double> twice;
   };
   mutable SpareState spare;
   template <class Real>
-  std::vector<FaceRecord<Real>> take_state(const Triangulation& tri) const {
-    std::vector<FaceRecord<Real>> state;
+  detail::RecordArray<Real> take_state(const Triangulation& tri, unsigned threads = 1) const {
+    detail::RecordArray<Real> state;
     {
       std::lock_guard<std::mutex> lock(spare.mutex);
       if constexpr (std::is_same_v<Real, float>) state.swap(spare.single); else state.swap(spare.twice);
     }
-    tri.fill_state(state, 1.0 / mean_edge, vertex_kind);
+    tri.fill_state(state, 1.0 / mean_edge, vertex_kind, threads);
     return state;
   }
   template <class Real>
-  void return_state(std::vector<FaceRecord<Real>>&& state) const {
+  void return_state(detail::RecordArray<Real>&& state) const {
     std::lock_guard<std::mutex> lock(spare.mutex);
     if constexpr (std::is_same_v<Real, float>) spare.single = std::move(state); else spare.twice = std::move(state);
   }
@@ -196,11 +204,11 @@ struct GeodesicSolver::Impl {
   // result in the input's order, the vertex sources' exact values on top.
   template <class Real>
   std::size_t vertex_minima(const Triangulation& tri, const FaceRecord<Real>* state, std::vector<Real>& vmin,
-                            std::vector<Index>& vlabel) const;
+                            std::vector<Index>& vlabel, unsigned threads = 1) const;
   template <class Real>
   void gather(const Triangulation& tri, const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
               bool relax, const GeodesicOptions& options, const std::vector<Real>& vmin, std::vector<Index>& vlabel,
-              GeodesicResult& result) const;
+              GeodesicResult& result, unsigned threads = 1) const;
 
   // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): validates the sources and seeds
   // their faces; vertex sources also give their vertex's exact value (vertex_seeds). Faces
@@ -218,7 +226,7 @@ struct GeodesicSolver::Impl {
   template <class Real>
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                      PropagationStats& stats) const;
+                      PropagationStats& stats, unsigned threads = 1) const;
   // Seeds the fans of `vertices` with a virtual source at the vertex, sigma = d[v] *
   // to_normalised; the faces that took it go to `changed` (and the queue), every face offered
   // one to `touched` when given.

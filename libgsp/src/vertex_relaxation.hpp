@@ -14,7 +14,9 @@
 // round only lowers distances, each value stays the length of a path on the surface, and no
 // vertex ends farther than the shortest edge path (tests/geodesic_bounds_test.cpp).
 #include "face_record.hpp"
+#include "parallel_ranges.hpp"
 
+#include <gsp/connectivity.hpp>
 #include <gsp/mesh.hpp>
 
 #include <algorithm>
@@ -37,7 +39,7 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
                                      const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
                                      const std::vector<Index>* from, Real limit, Real gain, std::vector<Real>& d,
                                      std::vector<Index>& label, std::size_t& relaxed,
-                                     std::vector<Index>* reached = nullptr) {
+                                     std::vector<Index>* reached = nullptr, unsigned threads = 1) {
   // A clearly shorter value only: rounding must not make two vertices lower each other forever.
   constexpr Real kMargin = 1 - 8 * std::numeric_limits<Real>::epsilon();
   using Item = std::pair<Real, Index>;
@@ -67,8 +69,8 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
   if (from) {
     for (Index v : *from) expand(v);
   } else {
-    for (std::size_t f = 0; f < triangles.size(); ++f) {
-      if (skipped_face[f]) continue;
+    auto scan = [&](std::size_t f) {
+      if (skipped_face[f]) return;
       const Triangle& t = triangles[f];
       for (Index i = 0; i < 3; ++i) {
         const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
@@ -79,6 +81,31 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
         // 14-16% of a query on 36k-100k-vertex scans).
         if (da + len < db * kMargin || db + len < da * kMargin) da < db ? offer(a, b, len) : offer(b, a, len);
       }
+    };
+    if (threads <= 1) {
+      for (std::size_t f = 0; f < triangles.size(); ++f) scan(f);
+    } else {
+      // Several threads find the few faces with such an edge (reading only), then those are
+      // scanned in order as above; an edge a lowering makes shorter later is offered when its
+      // lowered end is expanded.
+      std::vector<std::vector<Index>> found(threads);
+      for_ranges(threads, triangles.size(), [&](std::size_t begin, std::size_t end, unsigned part) {
+        std::vector<Index> mine;
+        for (std::size_t f = begin; f < end; ++f) {
+          if (skipped_face[f]) continue;
+          const Triangle& t = triangles[f];
+          bool shorter = false;
+          for (Index i = 0; i < 3; ++i) {
+            const Real len = Real(length[3 * f + i] * scale);
+            const Real da = d[t[i]], db = d[t[i == 2 ? 0 : i + 1]];
+            shorter |= da + len < db * kMargin || db + len < da * kMargin;
+          }
+          if (shorter) mine.push_back(Index(f));
+        }
+        found[part] = std::move(mine);
+      });
+      for (const std::vector<Index>& part : found)
+        for (Index f : part) scan(f);
     }
   }
   while (!heap.empty()) {
