@@ -1,4 +1,5 @@
 #include <gsp/cli/app.hpp>
+#include <gsp/cli/memory.hpp>
 
 #include <gsp/errors.hpp>
 #include <gsp/io/atomic_file.hpp>
@@ -85,6 +86,7 @@ int usage_fail(const std::string& name, const std::string& message) {
 int run_app(int argc, char** argv, const std::string& name, const std::string& description,
             const SetupFn& setup, const BodyFn& body) {
   std::string input_path;  // for messages, once the body declared it
+  return_large_frees_to_system();
   try {
     CLI::App app(description, name);
     bool quiet = false;

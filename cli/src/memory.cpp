@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <cstring>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace gsp::cli {
 
@@ -17,6 +20,12 @@ ResidentMemory resident_memory() {
   }
   std::fclose(f);
   return m;
+}
+
+void return_large_frees_to_system() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
 }
 
 }  // namespace gsp::cli
