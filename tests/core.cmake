@@ -17,3 +17,5 @@ target_compile_definitions(gsp-layout-report PRIVATE
   GSP_DATA_DIR="${GSP_DATA_DIR}" GSP_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
 gsp_test(core_parallel_passes SOURCES core_parallel_passes.cpp DEPS gsp::core Threads::Threads)
 target_include_directories(core_parallel_passes PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)
+gsp_test(core_straight_line_bound SOURCES core_straight_line_bound.cpp DEPS gsp::core Threads::Threads)
+target_include_directories(core_straight_line_bound PRIVATE ${PROJECT_SOURCE_DIR}/libgsp/src)
