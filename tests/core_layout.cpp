@@ -210,5 +210,26 @@ TEST(CoreLayout, ApplyLayoutRejectsAMismatchedLayout) {
   EXPECT_THROW(apply_layout(test::grid(2), l), InvalidInput);
 }
 
+// In place: the same mesh as apply_layout (positions, normals, triangles), and the inverse
+// layout gives the original back exactly.
+TEST(CoreLayout, InPlaceMatchesTheCopyAndTheInverseUndoesIt) {
+  TriangleMesh m = test::icosphere(2);
+  m.normals = m.positions;
+  for (const Layout& l : {compute_cache_layout(m), spatial_layout(m), random_layout(m, 3)}) {
+    const TriangleMesh copy = apply_layout(m, l);
+    TriangleMesh in_place = m;
+    apply_layout_in_place(in_place, l);
+    EXPECT_EQ(in_place.positions, copy.positions);
+    EXPECT_EQ(in_place.normals, copy.normals);
+    EXPECT_EQ(in_place.triangles, copy.triangles);
+    apply_layout_in_place(in_place, inverse_layout(l));
+    EXPECT_EQ(in_place.positions, m.positions);
+    EXPECT_EQ(in_place.normals, m.normals);
+    EXPECT_EQ(in_place.triangles, m.triangles);
+  }
+  TriangleMesh other = test::grid(2);
+  EXPECT_THROW(apply_layout_in_place(other, identity_layout(test::quad())), InvalidInput);
+}
+
 }  // namespace
 }  // namespace gsp

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 namespace gsp::test {
 namespace {
@@ -146,6 +147,36 @@ TEST(GeodesicInvariants, SharedMeshGivesTheSameFieldsAndIsNotCopiedWithoutLayout
     }
   }
   EXPECT_THROW(GeodesicSolver(std::shared_ptr<const TriangleMesh>()), InvalidInput);
+}
+
+// A solver that takes the mesh (laid out in place, or kept as it is) answers as one that copies
+// it, and release_mesh() gives the mesh back in the caller's order, bit for bit.
+TEST(GeodesicInvariants, ATakenMeshIsGivenBackInItsOrder) {
+  const TriangleMesh m = curved_mesh();
+  for (int mode = 0; mode < 3; ++mode) {
+    SCOPED_TRACE(mode);
+    SolverOptions so;
+    so.optimize_layout = mode > 0;
+    so.spatial_layout = mode == 2;
+    const GeodesicSolver copying(m, so);
+    TriangleMesh mine = m;
+    GeodesicSolver taking(std::move(mine), so);
+    for (Source s : {Source::at_vertex(3), Source::in_face(40, {0.6, 0.2, 0.2})}) {
+      const GeodesicResult a = copying.compute({s}), b = taking.compute({s});
+      EXPECT_EQ(a.vertex_distance, b.vertex_distance);
+      EXPECT_EQ(a.vertex_source, b.vertex_source);
+    }
+    const TriangleMesh back = std::move(taking).release_mesh();
+    EXPECT_EQ(back.positions, m.positions);
+    EXPECT_EQ(back.triangles, m.triangles);
+    EXPECT_THROW(std::move(taking).release_mesh(), InvalidInput);
+  }
+  // A shared mesh is copied back; the caller's stays as it was.
+  const auto shared = std::make_shared<const TriangleMesh>(m);
+  GeodesicSolver sharing(shared);
+  const TriangleMesh back = std::move(sharing).release_mesh();
+  EXPECT_EQ(back.positions, m.positions);
+  EXPECT_EQ(shared->triangles, m.triangles);
 }
 
 TEST(GeodesicInvariants, PreparationOnTwoThreadsGivesTheSameSolver) {

@@ -23,6 +23,8 @@ class IndexMaps {
   Index vertex_to_input(Index v) const { return identity() ? v : layout_.vertex_order[v]; }
   Index face_to_layout(Index in) const { return identity() ? in : layout_.face_rank[in]; }
   Index face_to_input(Index f) const { return identity() ? f : layout_.face_order[f]; }
+  // The layout itself (empty arrays for the identity); the maps are empty afterwards.
+  Layout release() && { return std::move(layout_); }
 
  private:
   Layout layout_;   // all four arrays empty for the identity

@@ -370,34 +370,73 @@ Layout identity_layout(const TriangleMesh& mesh) {
   return l;
 }
 
-TriangleMesh apply_layout(const TriangleMesh& mesh, const Layout& layout) {
+namespace {
+
+void check_layout_sizes(const TriangleMesh& mesh, const Layout& layout) {
   const std::size_t nv = mesh.num_vertices(), nf = mesh.num_faces();
   if (layout.vertex_order.size() != nv || layout.vertex_rank.size() != nv ||
       layout.face_order.size() != nf || layout.face_rank.size() != nf)
     throw InvalidInput("layout sizes (" + std::to_string(layout.vertex_order.size()) + " vertices, " +
                        std::to_string(layout.face_order.size()) + " faces) do not match the mesh (" +
                        std::to_string(nv) + ", " + std::to_string(nf) + ")");
-  const bool has_normals = mesh.normals.size() == nv && nv > 0;
-  TriangleMesh out;
-  out.positions.resize(nv);
-  if (has_normals) out.normals.resize(nv);
+}
+
+// Per-vertex values in the layout's order.
+template <class T>
+std::vector<T> vertices_in_layout(const std::vector<T>& values, const Layout& layout) {
+  const std::size_t nv = values.size();
+  std::vector<T> out(nv);
   for (std::size_t i = 0; i < nv; ++i) {
     const Index old = layout.vertex_order[i];
     if (old >= nv) throw InvalidInput("layout names vertex " + std::to_string(old) + " out of range");
-    out.positions[i] = mesh.positions[old];
-    if (has_normals) out.normals[i] = mesh.normals[old];
+    out[i] = values[old];
   }
-  out.triangles.resize(nf);
+  return out;
+}
+
+// The triangles in the layout's order, with the vertices' new numbers.
+std::vector<Triangle> triangles_in_layout(const std::vector<Triangle>& triangles, std::size_t nv,
+                                          const Layout& layout) {
+  const std::size_t nf = triangles.size();
+  std::vector<Triangle> out(nf);
   for (std::size_t i = 0; i < nf; ++i) {
     const Index old = layout.face_order[i];
     if (old >= nf) throw InvalidInput("layout names face " + std::to_string(old) + " out of range");
     for (int c = 0; c < 3; ++c) {
-      const Index v = mesh.triangles[old][c];
+      const Index v = triangles[old][c];
       if (v >= nv) throw InvalidInput("triangle index " + std::to_string(v) + " out of range");
-      out.triangles[i][c] = layout.vertex_rank[v];
+      out[i][c] = layout.vertex_rank[v];
     }
   }
   return out;
+}
+
+}  // namespace
+
+TriangleMesh apply_layout(const TriangleMesh& mesh, const Layout& layout) {
+  check_layout_sizes(mesh, layout);
+  const std::size_t nv = mesh.num_vertices();
+  TriangleMesh out;
+  out.positions = vertices_in_layout(mesh.positions, layout);
+  if (mesh.normals.size() == nv && nv > 0) out.normals = vertices_in_layout(mesh.normals, layout);
+  out.triangles = triangles_in_layout(mesh.triangles, nv, layout);
+  return out;
+}
+
+void apply_layout_in_place(TriangleMesh& mesh, const Layout& layout) {
+  check_layout_sizes(mesh, layout);
+  const std::size_t nv = mesh.num_vertices();
+  // One array at a time, each old one freed as its new one is ready.
+  mesh.positions = vertices_in_layout(mesh.positions, layout);
+  if (mesh.normals.size() == nv && nv > 0) mesh.normals = vertices_in_layout(mesh.normals, layout);
+  else mesh.normals.clear();
+  mesh.triangles = triangles_in_layout(mesh.triangles, nv, layout);
+}
+
+Layout inverse_layout(Layout layout) {
+  std::swap(layout.vertex_order, layout.vertex_rank);
+  std::swap(layout.face_order, layout.face_rank);
+  return layout;
 }
 
 double mean_neighbour_index_distance(const TriangleMesh& mesh) {

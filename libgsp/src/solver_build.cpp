@@ -155,8 +155,27 @@ GeodesicSolver::GeodesicSolver(std::shared_ptr<const TriangleMesh> input, const 
   impl_->build(mesh, std::move(input), options);
 }
 
+GeodesicSolver::GeodesicSolver(TriangleMesh&& input, const SolverOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->build(input, nullptr, options, &input);
+}
+
+TriangleMesh GeodesicSolver::release_mesh() && {
+  if (!impl_) throw InvalidInput("GeodesicSolver: used after release_mesh()");
+  std::unique_ptr<Impl> impl = std::move(impl_);
+  std::shared_ptr<const TriangleMesh> store = std::move(impl->mesh_store);
+  const bool owned = impl->owns_mesh && store.use_count() == 1;
+  Layout layout = std::move(impl->maps).release();
+  impl.reset();   // everything else freed before the mesh is put back in order
+  // An owned mesh was made non-const (make_shared<TriangleMesh>), so it may be moved out.
+  TriangleMesh mesh = owned ? std::move(const_cast<TriangleMesh&>(*store)) : TriangleMesh(*store);
+  store.reset();
+  if (!layout.vertex_rank.empty()) apply_layout_in_place(mesh, inverse_layout(std::move(layout)));
+  return mesh;
+}
+
 void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared,
-                                 const SolverOptions& options) {
+                                 const SolverOptions& options, TriangleMesh* owned) {
   using Clock = std::chrono::steady_clock;
   validate(input);
   if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(input, options.edge_lengths);
@@ -165,10 +184,22 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   heuristic = options.heuristic;
   if (options.optimize_layout) {
     Layout layout = options.spatial_layout ? gsp::spatial_layout(input) : compute_cache_layout(input);
-    mesh_store = std::make_shared<const TriangleMesh>(apply_layout(input, layout));
+    if (owned) {
+      apply_layout_in_place(*owned, layout);
+      mesh_store = std::make_shared<TriangleMesh>(std::move(*owned));
+    } else {
+      mesh_store = std::make_shared<TriangleMesh>(apply_layout(input, layout));
+    }
     maps = detail::IndexMaps(std::move(layout));
+    owns_mesh = true;
+  } else if (owned) {
+    mesh_store = std::make_shared<TriangleMesh>(std::move(*owned));
+    owns_mesh = true;
+  } else if (shared) {
+    mesh_store = std::move(shared);
   } else {
-    mesh_store = shared ? std::move(shared) : std::make_shared<const TriangleMesh>(input);
+    mesh_store = std::make_shared<TriangleMesh>(input);
+    owns_mesh = true;
   }
   const auto t1 = Clock::now();
   auto lap = [last = t1]() mutable {

@@ -131,6 +131,7 @@ struct GeodesicSolver::Impl {
   detail::IndexMaps maps;          // input <-> memory order
   // In memory order: a laid-out copy, or the caller's mesh itself when it keeps its order.
   std::shared_ptr<const TriangleMesh> mesh_store;
+  bool owns_mesh = false;          // mesh_store holds a mesh no caller sees (release_mesh may move it)
   const TriangleMesh& mesh() const { return *mesh_store; }
   Triangulation input;             // the (reordered) input faces
   std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
@@ -182,7 +183,9 @@ struct GeodesicSolver::Impl {
     if (requested != Precision::automatic) return requested;
     return tri.needs_double ? Precision::double_precision : Precision::single;
   }
-  void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options);
+  // `owned`: the caller's mesh, handed over (GeodesicSolver(TriangleMesh&&)); laid out in place.
+  void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options,
+             TriangleMesh* owned = nullptr);
   // The input triangulation: skipped faces, lengths (and the mean edge) from the mesh alone,
   // then the radial links from the connectivity.
   void build_lengths(const std::vector<double>& edge_lengths);

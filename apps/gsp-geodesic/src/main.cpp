@@ -102,7 +102,7 @@ void run(cli::Context& ctx, const Options& o) {
 
   cli::LoadOptions load = o.load;
   load.require_faces = o.domain == "mesh";   // auto and points accept a cloud
-  const cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
+  cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
   if (wants_line_sources(o)) {
     if (metric.wanted()) throw cli::UsageError("--metric does not apply to line sources");
     run_line_sources(ctx, o, in, max_distance, preview);
@@ -133,8 +133,14 @@ void run(cli::Context& ctx, const Options& o) {
     so.heuristic = heuristic;
     so.edge_lengths = metric_lengths(ctx, metric, in);
     so.threads = o.threads == 1 ? 1 : 0;   // the preparation: automatic unless one thread is asked for
-    // `in` outlives the solver: it shares the mesh (no copy when the file keeps its order).
-    GeodesicSolver solver(std::shared_ptr<const TriangleMesh>(&in.mesh, [](const TriangleMesh*) {}), so);
+    // One field: the solver takes the mesh (a layout reorders it in place instead of copying
+    // it) and gives it back for the output. Several: `in` outlives the solver and keeps the
+    // mesh for the outputs written meanwhile; the solver shares it (no copy when the file keeps
+    // its order).
+    const bool one_field = !(o.separate || o.matrix);
+    GeodesicSolver solver =
+        one_field ? GeodesicSolver(std::move(in.mesh), so)
+                  : GeodesicSolver(std::shared_ptr<const TriangleMesh>(&in.mesh, [](const TriangleMesh*) {}), so);
     ctx.timer().add("layout", solver.timings().layout);
     ctx.timer().add("build", solver.timings().build);
     const SolverTimings& bt = solver.timings();
@@ -166,12 +172,13 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
     ctx.stats()["memory"]["state_bytes_per_vertex"] =
-        in.mesh.num_vertices() ? double(solver.state_bytes(precision)) / double(in.mesh.num_vertices()) : 0.0;
+        solver.num_vertices() ? double(solver.state_bytes(precision)) / double(solver.num_vertices()) : 0.0;
     if (o.separate || o.matrix) {
       run_many(ctx, o, in, src, solver, go);
       return;
     }
     result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, go); });
+    in.mesh = ctx.timer().time("write", [&] { return std::move(solver).release_mesh(); });
   }
   report_result(ctx, result, in.mesh.num_faces());
   const bool labels = o.labels || src.sources.size() > 1;

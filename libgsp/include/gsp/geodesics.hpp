@@ -233,6 +233,10 @@ class GeodesicSolver {
   // one-shot run on a coherent file: 48 bytes per vertex less). The mesh must not change
   // while the solver lives.
   explicit GeodesicSolver(std::shared_ptr<const TriangleMesh> mesh, const SolverOptions& options = {});
+  // The same, taking the caller's mesh: a layout reorders it in place instead of copying it
+  // (a one-shot run on a scattered file: 48 bytes per vertex less at the peak).
+  // release_mesh() gives it back once the queries are done.
+  explicit GeodesicSolver(TriangleMesh&& mesh, const SolverOptions& options = {});
   ~GeodesicSolver();
   GeodesicSolver(GeodesicSolver&&) noexcept;
   GeodesicSolver& operator=(GeodesicSolver&&) noexcept;
@@ -263,6 +267,11 @@ class GeodesicSolver {
   // The precision a query with `requested` runs in: automatic resolved for vertex sources
   // (face-point sources use the input faces: see compute()).
   Precision resolved_precision(Precision requested, bool input_faces = false) const;
+
+  // Ends the solver and returns its mesh in the caller's order: the one it took (moved out,
+  // put back in order after everything else the solver held is freed) or a copy of the one it
+  // shares or copied. The solver is left like a moved-from one: destroy it or assign to it.
+  TriangleMesh release_mesh() &&;
 
  private:
   struct Impl;

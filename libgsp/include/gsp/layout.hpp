@@ -32,6 +32,13 @@ Layout identity_layout(const TriangleMesh& mesh);
 
 // Positions, normals and triangles reordered by the layout (triangle indices renumbered).
 TriangleMesh apply_layout(const TriangleMesh& mesh, const Layout& layout);
+// The same in place: each array replaced as its reordered copy is ready (one array's worth of
+// extra memory at a time, not a second mesh). Normals that do not match the vertices are
+// dropped, as apply_layout() leaves them out.
+void apply_layout_in_place(TriangleMesh& mesh, const Layout& layout);
+// The layout that undoes `layout` (orders and ranks swapped): applied to a laid-out mesh it
+// gives back the original order.
+Layout inverse_layout(Layout layout);
 
 // Mean |i - j| over the vertex pairs (i, j) joined by an edge: the measure of locality
 // the layout should lower.
