@@ -5,11 +5,13 @@
 // that cross into another thread's stripe to its owner as messages (RemoteStep: the unfolded
 // source, everything the owner needs to run the step itself). Every face record is written by
 // one thread only, so no record needs an atomic; the layout keeps the stripes compact, so few
-// steps cross. The threads keep their rounds within one of each other. Label-correcting like the sequential strategies: the fixed point is the same up
-// to GSP's order effects (a different order can let a different virtual source win a face).
+// steps cross. The threads keep their rounds within one of each other. Label-correcting like
+// the sequential strategies: the fixed point is the same up to GSP's order effects (a
+// different order can let a different virtual source win a face; ties: UpdateStep).
 //
-// Idle threads sleep on a condition variable (no spinning); the run ends when every thread is
-// idle with an empty inbox. Internal header of libgsp.
+// A thread waiting for the others to finish a round spins on their progress (yielding) and
+// reads its mail meanwhile; a thread with no work sleeps on a condition variable. The run ends
+// when every thread is idle with an empty inbox. Internal header of libgsp.
 #include "propagation.hpp"
 
 #include <atomic>
@@ -49,8 +51,9 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     std::vector<std::vector<RemoteStep<Real>>> inbox;
     std::vector<std::atomic<bool>> mail;
     // The limit of the last round each thread has finished (infinity while idle): a thread
-    // starts its next round only when every other one has finished the round it has just
-    // finished, so the threads walk the front in step, as one sequential run would, instead of
+    // starts its next round only when every other one has finished the round before the one
+    // it has just finished (one round of slack: a strict barrier left the second thread
+    // waiting), so the threads walk the front in step, as one sequential run would, instead of
     // one racing ahead on distances the other is about to lower.
     std::vector<std::atomic<Real>> finished;
     // The adaptive switch to postponing (gsp/intrinsic/speed_limiter.hpp), taken by all threads
