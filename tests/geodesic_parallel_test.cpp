@@ -31,9 +31,9 @@ std::vector<Source> spread_sources(const TriangleMesh& m, int n, std::uint64_t s
 
 // One source on an irregular planar triangulation: the straight-line distance at every vertex,
 // whatever the thread count (every unfolding agrees, and on several threads a path takes a
-// face from one within 64 ulps only when it is straighter, so the order cannot matter: worst
-// of 2400 runs of these queries 6e-6). 20,000 faces: the per-face and per-vertex passes split
-// on two threads too.
+// face from one within 256 ulps only when it is straighter, so the order cannot matter: worst
+// of 3 x 2400 runs of these queries 8.4e-6). 20,000 faces: the per-face and per-vertex passes
+// split on two threads too.
 TEST(ParallelPropagation, ExactOnAPlaneForAnyThreadCount) {
   const TriangleMesh m = jittered_grid(100, 0.2, 3);
   const GeodesicSolver solver(m);

@@ -204,8 +204,10 @@ class UpdateStep {
       // several threads a bend past a vertex almost on the straight line, come first, kept the
       // face and bent everything behind it (a jittered plane: 70-90 faces bent, vertices 3e-4
       // too far). So here a path takes a face when it is shorter on a coarse scale (the
-      // value's float bits less the last kTieBits: 64 ulps, 8e-6 in single precision), and on
-      // the same step of that scale when less lies behind its virtual source (fewer bends).
+      // value's float bits less the last kTieBits: 256 ulps, 3e-5 in single precision; 64
+      // still let a tie that straddles a step go either way, 8e-5 too far on a plane once in
+      // 1200 queries), and on the same step of that scale when less lies behind its virtual
+      // source (fewer bends).
       // One strict order on (coarse value, sigma): every accepted update lowers it, so the run
       // ends (a tolerance on both sides, tried first, let two paths take a face from each
       // other in turn). One thread keeps its rule: the sigma rule there moved the corpus's
@@ -249,7 +251,7 @@ class UpdateStep {
 
  private:
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
-  static constexpr unsigned kTieBits = 6;
+  static constexpr unsigned kTieBits = 8;
   // A non-negative value's float bits without the last kTieBits: ordered as the values are.
   static auto coarse(Real x) {
     using Bits = std::conditional_t<sizeof(Real) == 4, std::uint32_t, std::uint64_t>;
