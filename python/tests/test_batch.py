@@ -487,6 +487,15 @@ def test_output_names_are_unique():
     assert batch._output_names([pathlib.Path("/d/manifest.off")], ".jsonl") == ["manifest.off.jsonl"]
 
 
+def test_geodesic_jobs_run_on_one_core_unless_asked():
+    from gsp.batch.runner import _app_extra
+    assert _app_extra("geodesic", ["--source-vertex", "0"]) == ["--threads", "1"]
+    assert _app_extra("geodesic", ["--threads", "2"]) == []
+    assert _app_extra("geodesic", ["--threads=2"]) == []
+    assert _app_extra("bench", []) == ["--no-table"]
+    assert _app_extra("sample", ["--count", "10"]) == []
+
+
 def test_job_options_split_from_batch_options():
     own, job = batch._split_argv(["geodesic", "in/", "-o", "out", "--source-vertex", "0", "--workers=2",
                                   "--source-point", "-1.5,0,2", "--labels", "--timeout", "9", "--", "-o", "x"])

@@ -31,6 +31,15 @@ def _parse_memory(value):
         raise UsageError(f"--max-memory {value}: a size like 4G or 500M") from None
 
 
+
+def _app_extra(job_name, options):
+    """What gsp-batch adds to an app's command line after the job options."""
+    extra = ["--no-table"] if job_name == "bench" else []
+    # One core per worker: gsp-geodesic would use every core of the machine on big meshes.
+    if job_name == "geodesic" and not any(o == "--threads" or str(o).startswith("--threads=") for o in options):
+        extra += ["--threads", "1"]
+    return extra
+
 def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, options=(), bin_dir=None,
         ext=None, timeout=None, max_memory=None, retries=2, force=False, progress=None, on_client=None):
     """Run JOB on every mesh of INPUTS on Dask, outputs into OUTDIR; returns one dict per mesh.
@@ -82,8 +91,7 @@ def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, optio
         app = find_app(job_name, bin_dir)
         tool = _app_version(app)
         base = {"kind": "app", "job": job_name, "app": app,
-                "output_flag": "--json" if job_name == "bench" else "-o",
-                "extra": ["--no-table"] if job_name == "bench" else []}
+                "output_flag": "--json" if job_name == "bench" else "-o", "extra": _app_extra(job_name, options)}
     else:
         import cloudpickle
         tool = _callable_identity(fn)
