@@ -9,17 +9,6 @@
 
 namespace gsp::io::detail {
 
-namespace {
-
-template <class T>
-void put(std::string& out, T v) {   // little-endian hosts only (x86/ARM), like the readers
-  char b[sizeof(T)];
-  std::memcpy(b, &v, sizeof(T));
-  out.append(b, sizeof(T));
-}
-
-}  // namespace
-
 void write_ply(const std::string& path, const TriangleMesh& mesh, const VertexAttributes& attributes, bool ascii) {
   const bool normals = !mesh.normals.empty();
   const bool colors = !attributes.colors.empty();
@@ -35,22 +24,54 @@ void write_ply(const std::string& path, const TriangleMesh& mesh, const VertexAt
   out += "element face " + std::to_string(mesh.num_faces()) + "\n";
   out += "property list uchar int vertex_indices\nend_header\n";
 
-  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
-    float f[6] = {float(mesh.positions[v].x), float(mesh.positions[v].y), float(mesh.positions[v].z)};
-    if (normals) {
-      f[3] = float(mesh.normals[v].x);
-      f[4] = float(mesh.normals[v].y);
-      f[5] = float(mesh.normals[v].z);
+  if (!ascii) {
+    // Binary: every record has a fixed size, so the whole body is sized once and filled in
+    // place (appending value by value regrew and copied the buffer: 0.43 s for a 2.2M-vertex
+    // field, most of the app's write phase).
+    const std::size_t per_vertex = 4 * (3 + (normals ? 3 : 0) + attributes.scalars.size() + attributes.labels.size()) +
+                                   (colors ? 4 : 0);
+    const std::size_t header = out.size();
+    out.resize(header + per_vertex * mesh.num_vertices() + 13 * mesh.num_faces());
+    char* at = out.data() + header;
+    auto put_raw = [&at](const void* p, std::size_t n) {   // little-endian hosts only, like the readers
+      std::memcpy(at, p, n);
+      at += n;
+    };
+    for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+      const float xyz[3] = {float(mesh.positions[v].x), float(mesh.positions[v].y), float(mesh.positions[v].z)};
+      put_raw(xyz, sizeof xyz);
+      if (normals) {
+        const float n[3] = {float(mesh.normals[v].x), float(mesh.normals[v].y), float(mesh.normals[v].z)};
+        put_raw(n, sizeof n);
+      }
+      for (const auto& sc : attributes.scalars) put_raw(&sc.second[v], 4);
+      for (const auto& l : attributes.labels) put_raw(&l.second[v], 4);
+      if (colors) put_raw(attributes.colors[v].data(), 4);
     }
-    const int nf = normals ? 6 : 3;
-    if (ascii) {
+    for (const Triangle& t : mesh.triangles) {
+      const std::uint8_t three = 3;
+      put_raw(&three, 1);
+      for (Index i : t) {
+        const std::int32_t k = static_cast<std::int32_t>(i);
+        put_raw(&k, 4);
+      }
+    }
+  } else {
+    for (std::size_t v = 0; v < mesh.num_vertices(); ++v) {
+      float f[6] = {float(mesh.positions[v].x), float(mesh.positions[v].y), float(mesh.positions[v].z)};
+      if (normals) {
+        f[3] = float(mesh.normals[v].x);
+        f[4] = float(mesh.normals[v].y);
+        f[5] = float(mesh.normals[v].z);
+      }
+      const int nf = normals ? 6 : 3;
       for (int k = 0; k < nf; ++k) {
         if (k) out += ' ';
         append_number(out, f[k]);
       }
-      for (const auto& s : attributes.scalars) {
+      for (const auto& sc : attributes.scalars) {
         out += ' ';
-        append_number(out, s.second[v]);
+        append_number(out, sc.second[v]);
       }
       for (const auto& l : attributes.labels) {
         out += ' ';
@@ -62,24 +83,14 @@ void write_ply(const std::string& path, const TriangleMesh& mesh, const VertexAt
           append_number(out, static_cast<long long>(attributes.colors[v][k]));
         }
       out += '\n';
-    } else {
-      for (int k = 0; k < nf; ++k) put(out, f[k]);
-      for (const auto& s : attributes.scalars) put(out, s.second[v]);
-      for (const auto& l : attributes.labels) put(out, l.second[v]);
-      if (colors) out.append(reinterpret_cast<const char*>(attributes.colors[v].data()), 4);
     }
-  }
-  for (const Triangle& t : mesh.triangles) {
-    if (ascii) {
+    for (const Triangle& t : mesh.triangles) {
       out += '3';
       for (Index i : t) {
         out += ' ';
         append_number(out, static_cast<long long>(i));
       }
       out += '\n';
-    } else {
-      put(out, std::uint8_t(3));
-      for (Index i : t) put(out, static_cast<std::int32_t>(i));
     }
   }
   AtomicFile file(path);
