@@ -26,9 +26,9 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
   // vertex is a coin toss the branch predictor loses.
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const Real inf = std::numeric_limits<Real>::infinity();
-  auto scatter = [&](std::size_t first, std::size_t last, Real* dmin, Index* label_of) {
-    std::fill(dmin, dmin + nv, inf);
-    std::fill(label_of, label_of + nv, kInvalidIndex);
+  auto scatter = [&](std::size_t first, std::size_t last, std::vector<Real>& dmin, std::vector<Index>& label_of) {
+    dmin.assign(nv, inf);
+    label_of.assign(nv, kInvalidIndex);
     std::size_t reached_here = 0;
     constexpr std::size_t kBlock = 256;
     Real corner[3 * kBlock];
@@ -50,10 +50,8 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
     }
     return reached_here;
   };
-  vmin.resize(nv);
-  vlabel.resize(nv);
   const unsigned parts = detail::ranges_used(threads, nf);
-  if (parts == 1) return scatter(0, nf, vmin.data(), vlabel.data());
+  if (parts == 1) return scatter(0, nf, vmin, vlabel);
   // Several threads: each takes a range of faces into minima of its own (the first into the
   // result), then the minima are merged per vertex, an earlier range winning ties: the same
   // values and labels as one thread.
@@ -61,13 +59,8 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
   std::vector<std::vector<Index>> part_label(parts - 1);
   std::atomic<std::size_t> faces_reached{0};
   detail::for_ranges(parts, nf, [&](std::size_t begin, std::size_t end, unsigned part) {
-    Real* dmin = vmin.data();
-    Index* label_of = vlabel.data();
-    if (part > 0) {
-      part_min[part - 1].resize(nv), part_label[part - 1].resize(nv);
-      dmin = part_min[part - 1].data(), label_of = part_label[part - 1].data();
-    }
-    faces_reached += scatter(begin, end, dmin, label_of);
+    faces_reached += part == 0 ? scatter(begin, end, vmin, vlabel)
+                               : scatter(begin, end, part_min[part - 1], part_label[part - 1]);
   });
   detail::for_ranges(threads, nv, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t k = 0; k + 1 < parts; ++k)

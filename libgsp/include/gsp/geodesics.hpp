@@ -57,13 +57,9 @@ enum class Strategy : std::uint8_t {
 // caps, whose unfolding in float is off by more than the face itself (docs/gsp-core.md).
 enum class Precision : std::uint8_t { single, double_precision, automatic };
 
-// Meshes with fewer faces propagate on one thread unless GeodesicOptions::threads says
+// Meshes with fewer faces run a query on one thread unless GeodesicOptions::threads says
 // otherwise: below it the threads' start-up and the messages cost more than they save.
 inline constexpr std::size_t kParallelMinFaces = 200000;
-// ... and with at least this many seeded faces per thread (a vertex source seeds its fan,
-// about 6): a front from a few sources starts in one thread's block of faces and the other
-// threads would mostly wait for it.
-inline constexpr std::size_t kParallelMinSeedsPerThread = 64;
 
 struct GeodesicOptions {
   Strategy strategy = Strategy::speed_limiter;
@@ -80,13 +76,14 @@ struct GeodesicOptions {
   // Fill GeodesicResult::face_distance / face_source. A caller that needs per-vertex results
   // only saves two arrays in face order (about 10% of a query on a large mesh).
   bool want_face_distances = true;
-  // Threads for one propagation (speed_limiter and hybrid_postpone strategies): 0 = automatic
-  // (all hardware threads for meshes of at least kParallelMinFaces faces and sources spread
-  // enough, see kParallelMinSeedsPerThread; one otherwise and inside an already parallel
-  // caller such as compute_many), 1 = sequential. Faces are split
-  // into one block per thread along the cache layout; steps between blocks travel as messages.
-  // The result equals the sequential one up to GSP's order effects (docs/performance.md).
-  // Runs with targets and bounded queries (compute_local) stay on one thread.
+  // Threads for one full query: 0 = automatic (all hardware threads for meshes of at least
+  // kParallelMinFaces faces, whatever the number of sources; one otherwise and inside an
+  // already parallel caller such as compute_many), 1 = sequential. The propagation
+  // (speed_limiter, speed_limiter_postpone and hybrid_postpone strategies) deals stripes of
+  // faces to the threads, which walk the front in step; steps between stripes travel as
+  // messages; the query's other passes split into ranges. The result equals the sequential
+  // one up to GSP's order effects (docs/performance.md). Runs with targets and bounded
+  // queries (compute_local) stay on one thread.
   unsigned threads = 0;
   // Targets (input vertex indices): when given, the propagation runs in a heap (the
   // priority_queue strategy, whatever `strategy` says) and stops as soon as no queued face can
