@@ -132,7 +132,26 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     kind[v] = flat ? kFlatVertex : saddle ? kSaddleVertex : convex ? kConvexVertex : kPlainVertex;
   }
   // A vertex joining several fans has no single angle sum.
-  for (Index v : nonmanifold_vertices) kind[v] = kPlainVertex;
+  std::vector<std::uint8_t> joins_fans(nv, 0);
+  for (Index v : nonmanifold_vertices) kind[v] = kPlainVertex, joins_fans[v] = 1;
+  // Flat only inside a flat region: a flat vertex with a curved neighbour (angle sum off 2 pi,
+  // or a reflex boundary corner) stays plain, so no line is carried past it (rule 4 of
+  // docs/gsp-core.md: on midpoint-split meshes every new vertex is flat next to curved old
+  // ones, and lines carried past them came out 1% short on average). Vertices joining
+  // several fans have no angle sum to judge by and do not count (the local triangles of
+  // point clouds overlap at many of them, on planes too).
+  std::vector<std::uint8_t> curved_neighbour(nv, 0);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (skipped_face[f]) continue;
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 1; j < 3; ++j) {
+        const Index b = t[(i + j) % 3];
+        if (kind[t[i]] == kFlatVertex && kind[b] != kFlatVertex && !joins_fans[b]) curved_neighbour[t[i]] = 1;
+      }
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (curved_neighbour[v]) kind[v] = kPlainVertex;
   return kind;
 }
 
