@@ -131,6 +131,21 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     const bool convex = !boundary[v] && angle[v] < 2 * kPi;
     kind[v] = flat ? kFlatVertex : saddle ? kSaddleVertex : convex ? kConvexVertex : kPlainVertex;
   }
+  // Barely saddle vertices go straight on like convex ones, unless a saddle is next to them:
+  // in a cluster of negative curvature (a CAD part's concave fillet) the lines carried past
+  // them go on to pass the saddles at the wrong side (the boiler section: 23% short).
+  auto barely_saddle = [&](Index v) {
+    return kind[v] == kPlainVertex && used[v] && !boundary[v] && angle[v] <= 2 * kPi * (1 + kStraightExcess);
+  };
+  std::vector<std::uint8_t> saddle_neighbour(nv, 0);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (skipped_face[f]) continue;
+    const Triangle& t = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i)
+      if (kind[t[(i + 1) % 3]] == kSaddleVertex || kind[t[(i + 2) % 3]] == kSaddleVertex) saddle_neighbour[t[i]] = 1;
+  }
+  for (std::size_t v = 0; v < nv; ++v)
+    if (barely_saddle(Index(v)) && !saddle_neighbour[v]) kind[v] = kConvexVertex;
   // A vertex joining several fans has no single angle sum.
   std::vector<std::uint8_t> joins_fans(nv, 0);
   for (Index v : nonmanifold_vertices) kind[v] = kPlainVertex, joins_fans[v] = 1;

@@ -26,10 +26,16 @@ namespace gsp::intrinsic {
 //   curvature). No shortest path turns at such a vertex, and bending a source there is never
 //   shorter than carrying it straight on: the propagation keeps a source straight past one
 //   wherever the probe says "bend" but the centroid is still seen through the edge.
+//   So are the barely saddle vertices, whose angle sum exceeds 2 pi by at most
+//   kStraightExcess (relative), unless a saddle vertex is next to them: a needless bend
+//   over-estimates the whole face, a line passing such a vertex on the wrong side is short
+//   by the little the vertex's excess turns it (docs/gsp-core.md, rule 6, has the corpus
+//   figures both ways).
 // The corner angles come from the 3D positions, or from `length` (per halfedge) when it is
 // given: with caller-supplied intrinsic lengths (a metric) the 3D angles mean nothing.
 inline constexpr std::uint8_t kPlainVertex = 0, kFlatVertex = 1, kSaddleVertex = 2, kConvexVertex = 3;
 inline constexpr double kSaddleExcess = 0.01;
+inline constexpr double kStraightExcess = 1e-3;
 //
 // boundary_halfedge[3 f + i] is non-zero where halfedge i of face f is alone on its edge;
 // nonmanifold_vertices (ends of edges with more than two faces, bridges, coincident vertices)
