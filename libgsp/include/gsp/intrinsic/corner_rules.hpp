@@ -18,7 +18,7 @@ namespace gsp::intrinsic {
 // the opposite corner towards the centroid.
 inline constexpr double kSaddleLambda = 0.75;
 // The loose probe that can overrule a "bend" at a saddle end.
-inline constexpr double kSaddleLooseLambda = 0.3;
+inline constexpr double kSaddleLooseLambda = 0.15;
 
 // A bend at `end_kind`'s vertex (kind 1: at A, 2: at B) reconsidered; returns 0 to go on
 // straight, else `kind`.
