@@ -131,42 +131,39 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     const bool convex = !boundary[v] && angle[v] < 2 * kPi;
     kind[v] = flat ? kFlatVertex : saddle ? kSaddleVertex : convex ? kConvexVertex : kPlainVertex;
   }
-  // Barely saddle vertices go straight on like convex ones, unless a saddle is next to them:
-  // in a cluster of negative curvature (a CAD part's concave fillet) the lines carried past
-  // them go on to pass the saddles at the wrong side (the boiler section: 23% short).
-  auto barely_saddle = [&](Index v) {
-    return kind[v] == kPlainVertex && used[v] && !boundary[v] && angle[v] <= 2 * kPi * (1 + kStraightExcess);
-  };
-  std::vector<std::uint8_t> saddle_neighbour(nv, 0);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    if (skipped_face[f]) continue;
-    const Triangle& t = mesh.triangles[f];
-    for (int i = 0; i < 3; ++i)
-      if (kind[t[(i + 1) % 3]] == kSaddleVertex || kind[t[(i + 2) % 3]] == kSaddleVertex) saddle_neighbour[t[i]] = 1;
-  }
-  for (std::size_t v = 0; v < nv; ++v)
-    if (barely_saddle(Index(v)) && !saddle_neighbour[v]) kind[v] = kConvexVertex;
-  // A vertex joining several fans has no single angle sum.
   std::vector<std::uint8_t> joins_fans(nv, 0);
-  for (Index v : nonmanifold_vertices) kind[v] = kPlainVertex, joins_fans[v] = 1;
-  // Flat only inside a flat region: a flat vertex with a curved neighbour (angle sum off 2 pi,
-  // or a reflex boundary corner) stays plain, so no line is carried past it (rule 4 of
-  // docs/gsp-core.md: on midpoint-split meshes every new vertex is flat next to curved old
-  // ones, and lines carried past them came out 1% short on average). Vertices joining
-  // several fans have no angle sum to judge by and do not count (the local triangles of
-  // point clouds overlap at many of them, on planes too).
-  std::vector<std::uint8_t> curved_neighbour(nv, 0);
+  for (Index v : nonmanifold_vertices) joins_fans[v] = 1;
+  // What each vertex's neighbours are, in one pass over the faces: kSaddleNext where one is a
+  // saddle, kCurvedNext where one is neither flat nor joining several fans.
+  constexpr std::uint8_t kSaddleNext = 1, kCurvedNext = 2;
+  std::vector<std::uint8_t> next_to(nv, 0);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     if (skipped_face[f]) continue;
     const Triangle& t = mesh.triangles[f];
     for (int i = 0; i < 3; ++i)
       for (int j = 1; j < 3; ++j) {
         const Index b = t[(i + j) % 3];
-        if (kind[t[i]] == kFlatVertex && kind[b] != kFlatVertex && !joins_fans[b]) curved_neighbour[t[i]] = 1;
+        next_to[t[i]] |= std::uint8_t((kind[b] == kSaddleVertex ? kSaddleNext : 0) |
+                                      (kind[b] != kFlatVertex && !joins_fans[b] ? kCurvedNext : 0));
       }
   }
-  for (std::size_t v = 0; v < nv; ++v)
-    if (curved_neighbour[v]) kind[v] = kPlainVertex;
+  for (std::size_t v = 0; v < nv; ++v) {
+    // Barely saddle vertices go straight on like convex ones, unless a saddle is next to
+    // them: in a cluster of negative curvature (a CAD part's concave fillet) the lines carried
+    // past them go on to pass the saddles at the wrong side (the boiler section: 23% short).
+    if (kind[v] == kPlainVertex && used[v] && !boundary[v] && angle[v] <= 2 * kPi * (1 + kStraightExcess) &&
+        !(next_to[v] & kSaddleNext))
+      kind[v] = kConvexVertex;
+    // A vertex joining several fans has no single angle sum.
+    if (joins_fans[v]) kind[v] = kPlainVertex;
+    // Flat only inside a flat region: a flat vertex with a curved neighbour (angle sum off
+    // 2 pi, or a reflex boundary corner) stays plain, so no line is carried past it (rule 4
+    // of docs/gsp-core.md: on midpoint-split meshes every new vertex is flat next to curved
+    // old ones, and lines carried past them came out 1% short on average). Vertices joining
+    // several fans have no angle sum to judge by and do not count (the local triangles of
+    // point clouds overlap at many of them, on planes too).
+    if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) kind[v] = kPlainVertex;
+  }
   return kind;
 }
 
