@@ -78,6 +78,59 @@ TEST(VertexKinds, IcosphereIsConvexEverywhere) {
   for (std::uint8_t k : intrinsic::vertex_kinds(m, boundary, none_skipped(m), {})) EXPECT_EQ(k, intrinsic::kConvexVertex);
 }
 
+std::vector<std::uint8_t> kinds_of_closed(const TriangleMesh& m) {
+  return intrinsic::vertex_kinds(m, std::vector<std::uint8_t>(3 * m.num_faces(), 0), none_skipped(m), {});
+}
+
+TEST(VertexKinds, FlatOnlyInsideFlatRegions) {
+  // Twice split at edge midpoints: the icosphere's own vertices stay convex, every new vertex
+  // is flat (it lies on an old edge or inside an old face), but only those with no old
+  // vertex among their neighbours count as flat; the others are plain.
+  const TriangleMesh ico = test::icosphere(1);
+  const TriangleMesh m = test::split4(test::split4(ico));
+  const Index old_count = Index(ico.num_vertices());
+  std::vector<bool> next_to_old(m.num_vertices(), false);
+  for (const Triangle& t : m.triangles)
+    for (int i = 0; i < 3; ++i)
+      if (t[(i + 1) % 3] < old_count || t[(i + 2) % 3] < old_count) next_to_old[t[i]] = true;
+  const auto kind = kinds_of_closed(m);
+  std::size_t flat = 0, plain = 0;
+  for (Index v = 0; v < Index(m.num_vertices()); ++v) {
+    if (v < old_count) {
+      EXPECT_EQ(kind[v], intrinsic::kConvexVertex) << v;
+    } else {
+      EXPECT_EQ(kind[v], next_to_old[v] ? intrinsic::kPlainVertex : intrinsic::kFlatVertex) << v;
+      ++(next_to_old[v] ? plain : flat);
+    }
+  }
+  EXPECT_GT(flat, 0u);
+  EXPECT_GT(plain, 0u);
+}
+
+TEST(VertexKinds, BarelySaddleVerticesGoWithTheConvexOnes) {
+  // A closed fan: vertex 0 at the centre of six ring vertices at heights +h, -h, ..., closed
+  // by a cone to an apex (the ring vertices are convex, so no saddle is next to vertex 0). Its angle sum exceeds 2 pi by
+  // 0.066% at h = 0.02 (barely: convex), 0.26% at h = 0.04 (plain), 1.6% at h = 0.1 (saddle).
+  auto fan = [](double h) {
+    TriangleMesh m;
+    m.positions.push_back({0, 0, 0});
+    for (int i = 0; i < 6; ++i) {
+      const double a = 3.14159265358979323846 / 3 * i;
+      m.positions.push_back({std::cos(a), std::sin(a), i % 2 ? -h : h});
+    }
+    m.positions.push_back({0, 0, 3});
+    for (Index i = 0; i < 6; ++i) {
+      const Index a = 1 + i, b = 1 + (i + 1) % 6;
+      m.triangles.push_back({0, a, b});
+      m.triangles.push_back({a, 7, b});   // the upper apex over the ring
+    }
+    return m;
+  };
+  EXPECT_EQ(kinds_of_closed(fan(0.02))[0], intrinsic::kConvexVertex);
+  EXPECT_EQ(kinds_of_closed(fan(0.04))[0], intrinsic::kPlainVertex);
+  EXPECT_EQ(kinds_of_closed(fan(0.1))[0], intrinsic::kSaddleVertex);
+}
+
 TEST(FaceFrame, LengthsAreKeptAndEdgeFramesInvert) {
   const intrinsic::FaceFrame f = intrinsic::face_frame({3.0, 4.0, 5.0});   // right angle at corner 1
   EXPECT_DOUBLE_EQ(f.corner[2].x, 3.0);
