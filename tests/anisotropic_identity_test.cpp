@@ -31,6 +31,7 @@ std::vector<double> plain_lengths(const TriangleMesh& m) {
 GeodesicOptions without_line_bound() {
   GeodesicOptions go;
   go.straight_line_bound = false;
+  go.straight_line_test = false;   // neither the bound nor the update step's test (rule 8)
   return go;
 }
 

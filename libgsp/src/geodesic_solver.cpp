@@ -82,7 +82,9 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<VertexSeed> vertex_seeds;
   seed<Real>(tri, sources, state.data(), queue, vertex_seeds, goal ? &*goal : nullptr, nullptr);
   result.stats.enqueued = queue.size();
-  propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr);
+  const std::vector<float> line_sources = line_sources_for(sources);
+  const float* lines = line_sources.empty() ? nullptr : line_sources.data();
+  propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr, lines);
 
   std::vector<Real> vmin;
   std::vector<Index> vlabel;
@@ -94,7 +96,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     for (const VertexSeed& vs : vertex_seeds)
       if (Real(vs.value * scale) < vmin[vs.vertex])
         vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
-    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, threads);
+    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, lines, threads);
   }
   // Last on the values: nothing below the straight line (straight_line_bound.hpp), in layout
   // order (positions and values read in sequence).
@@ -105,6 +107,11 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads);
   return_state(std::move(state));
   return result;
+}
+
+std::vector<float> GeodesicSolver::Impl::line_sources_for(const std::vector<Source>& sources) const {
+  if (line_positions.empty()) return {};
+  return detail::scaled_sources(detail::source_points(mesh(), maps, sources), 1.0 / mean_edge, line_centre);
 }
 
 GeodesicResult geodesic_distances(const TriangleMesh& mesh, const std::vector<Source>& sources,

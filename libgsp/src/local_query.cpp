@@ -59,7 +59,7 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
 template <class Real>
 void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecord<Real>* state,
                                        std::vector<QueueEntry<Real>>& queue, LocalValues values,
-                                       PropagationStats& stats) const {
+                                       PropagationStats& stats, const float* line_sources) const {
   const double scale = 1.0 / mean_edge;
   std::vector<Index> changed_faces, from = values.vertices;
   for (int round = 0;; ++round) {
@@ -74,7 +74,8 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
     // Every face offered a seed is reset after the query, whether or not it took it.
     seed_pseudo_sources(input, lowered, values.vdist, scale, values.vlabel, state, queue, changed_faces, &values.seeded);
     if (queue.empty()) return;
-    propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
+    propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources,
+                    /*every_update=*/true);
     from.clear();
     for (Index f : changed_faces) {
       if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
@@ -130,7 +131,9 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
 
   seed<Real>(tri, sources, buf.state.data(), buf.queue, ws.vertex_seeds, nullptr, &ws.seeded);
   result.stats.enqueued = buf.queue.size();
-  propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces);
+  const std::vector<float> line_sources = line_sources_for(sources);
+  const float* lines = line_sources.empty() ? nullptr : line_sources.data();
+  propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces, lines);
 
   // The faces reached: those the propagation reached for the first time, and the seeded ones.
   for (Index f : ws.faces) ws.face_mark[f] = 1;
@@ -148,7 +151,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   }
   if (options.vertex_relaxation)
     relax_local<Real>(options, buf.state.data(), buf.queue,
-                      {ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded}, result.stats);
+                      {ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded}, result.stats, lines);
   result.stats.faces_reached = ws.faces.size();
   if (options.straight_line_bound && !custom_lengths) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(

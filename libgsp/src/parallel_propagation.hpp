@@ -42,7 +42,8 @@ template <class Real>
 void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, const Index* ring,
                                 const ProbeTable<Real>& probe,
                                 Real expand_limit, std::vector<QueueEntry<Real>>& seeds, Real f, unsigned threads,
-                                PropagationStats& stats, bool postpone = false, bool adaptive = false) {
+                                PropagationStats& stats, bool postpone = false, bool adaptive = false,
+                                const StraightLineTest& line = {}) {
   const Real inf = std::numeric_limits<Real>::infinity();
   const unsigned shift = stripe_shift(num_faces, threads);
   struct Shared {
@@ -72,7 +73,7 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
   auto worker = [&](unsigned me) {
     inside_parallel_region() = true;
     PropagationStats& st = local_stats[me];
-    UpdateStep<Real, true> step(faces, ring, probe, expand_limit, st);
+    UpdateStep<Real, true> step(faces, ring, probe, expand_limit, st, line);
     std::vector<std::vector<RemoteStep<Real>>> outbox(threads);
     step.partition(Index(me), Index(threads), shift, &outbox);
     std::vector<QueueEntry<Real>> a, b;
@@ -207,6 +208,7 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     stats.enqueued += s.enqueued;
     stats.stale_skipped += s.stale_skipped;
     stats.postponed += s.postponed;
+    stats.straight_line_bends += s.straight_line_bends;
     stats.iterations = std::max(stats.iterations, s.iterations);
   }
   stats.switched_to_postpone = stats.switched_to_postpone || (shared.postpone.load() && !postpone);

@@ -49,14 +49,24 @@ struct RemoteStep {
   bool h_dir;
 };
 
+// What the update step needs to keep its straight updates above the straight line in 3D
+// (UpdateStep::try_update): the propagation's triangles (layout vertex indices) and the
+// vertices and sources of straight_line_bound.hpp's scaled_positions / scaled_sources. All
+// null: no test (caller-supplied lengths, whose distances 3D does not bound).
+struct StraightLineTest {
+  const Triangle* triangles = nullptr;
+  const float* positions = nullptr;   // x, y, z per vertex
+  const float* sources = nullptr;     // x, y, z, offset per source label
+};
+
 // Partitioned: a parallel run's step, owning every threads-th stripe of faces (partition());
 // the sequential step compiles without the ownership test.
 template <class Real, bool Partitioned = false>
 class UpdateStep {
  public:
   UpdateStep(FaceRecord<Real>* faces, const Index* ring, const ProbeTable<Real>& probe, Real expand_limit,
-             PropagationStats& stats)
-      : faces_(faces), ring_(ring), probe_(probe), limit_(expand_limit), stats_(stats) {}
+             PropagationStats& stats, const StraightLineTest& line = {})
+      : faces_(faces), ring_(ring), probe_(probe), limit_(expand_limit), line_(line), stats_(stats) {}
 
   // Bounded queries collect the faces they reach for the first time (to list and reset them
   // without scanning the mesh); one predictable branch per accepted update.
@@ -71,7 +81,9 @@ class UpdateStep {
   // Starts loading the record an entry will update first (the face across its edge): on
   // meshes whose state outgrows the L2 cache that load is the step's main stall.
   void prefetch(const QueueEntry<Real>& e) const {
-    __builtin_prefetch(&faces_[face_of(ring_[e.halfedge] & kRingIndexMask)]);
+    const Index f = face_of(ring_[e.halfedge] & kRingIndexMask);
+    __builtin_prefetch(&faces_[f]);
+    if (line_.triangles) __builtin_prefetch(&line_.triangles[f]);
   }
 
   // Propagates the virtual source of the entry's face over its halfedge into every other face
@@ -138,7 +150,15 @@ class UpdateStep {
     const Real cx = (v.px + e1) * Real(1.0 / 3.0);
     const Real cy = v.py * Real(1.0 / 3.0);
 
+    // The bend at the end giving the shorter path source -> corner -> centroid (the paper's
+    // l1, l2).
+    auto shorter_bend = [&] {
+      const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
+      const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
+      return l1 <= l2 ? 1 : 2;
+    };
     int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
+    int probed = 0;   // what the probe alone said
     if (sy <= 0) {
       // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
       // (lambda 1); a zero-length edge is seen through its single point.
@@ -161,6 +181,7 @@ class UpdateStep {
         const Real tr = rx * -sy + sx * ry;
         return tr < 0 ? 1 : (tr > e1 * (ry - sy) ? 2 : 0);
       };
+      probed = kind;
       if (kind != 0) {
         const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
         auto within_flat_miss = [&] { return (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span; };
@@ -173,47 +194,39 @@ class UpdateStep {
       // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
       // (Even at a flat vertex: carrying the source on would let it circle round a vertex
       // and pick up rounding drift; the face gets the straight path through another edge.)
-      const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
-      const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) +
-                      std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-      kind = l1 <= l2 ? 1 : 2;
+      kind = shorter_bend();
     }
 
     Real new_sigma, new_dT, ex, ey;   // ex, ey: the new source in g's edge frame
-    if (kind == 0) {
-      new_sigma = sigma;
-      new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
-      ex = sx, ey = sy;
-    } else if (kind == 1) {
-      new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
-      new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
-      ex = 0, ey = 0;
-    } else {
-      new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-      new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
-      ex = e1, ey = 0;
-    }
-
-    // Only a clearly shorter path counts: an improvement lost in rounding would bounce
-    // between faces forever.
-    if constexpr (!Partitioned) {
-      if (!(new_dT + new_dT * kRelativeImprovement < t.dT)) return;
-    } else {
-      // Parallel runs: paths within rounding of each other reach a face in any order. One
-      // thread meets them in wavefront order and keeps the first, the straight path; on
-      // several threads a bend past a vertex almost on the straight line, come first, kept the
-      // face and bent everything behind it (a jittered plane: 70-90 faces bent, vertices 3e-4
-      // too far). So here a path takes a face when it is shorter on a coarse scale (the
-      // value's float bits less the last kTieBits: 256 ulps, 3e-5 in single precision; 64
-      // still let a tie that straddles a step go either way, 8e-5 too far on a plane once in
-      // 1200 queries), and on the same step of that scale when less lies behind its virtual
-      // source (fewer bends).
-      // One strict order on (coarse value, sigma): every accepted update lowers it, so the run
-      // ends (a tolerance on both sides, tried first, let two paths take a face from each
-      // other in turn). One thread keeps its rule: the sigma rule there moved the corpus's
-      // benign MRE both ways (p95 0.298% -> 0.317%).
-      const auto coarse_new = coarse(new_dT), coarse_old = coarse(t.dT);
-      if (!(coarse_new < coarse_old || (coarse_new == coarse_old && new_sigma < t.sigma))) return;
+    auto path = [&] {
+      if (kind == 0) {
+        new_sigma = sigma;
+        new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
+        ex = sx, ey = sy;
+      } else if (kind == 1) {
+        new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
+        new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
+        ex = 0, ey = 0;
+      } else {
+        new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
+        new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
+        ex = e1, ey = 0;
+      }
+    };
+    path();
+    if (!improves(t, new_dT, new_sigma)) return;
+    // A straight path that reaches the face's new corner P shorter than the straight line in
+    // 3D does not exist: its unfolding passed a vertex on a side no surface path takes. It
+    // bends instead, where the probe said or else at the end of the shorter bend (A's and B's
+    // values came with the sending face, tested there; docs/gsp-core.md, rule 8). Tested only
+    // on a path the face takes: a bend is never shorter than the straight path, so where the
+    // face refuses the straight one it refuses the bend too.
+    if (kind == 0 && line_.sources &&
+        below_straight_line(g, cj, sigma + std::sqrt((sx - v.px) * (sx - v.px) + (sy - v.py) * (sy - v.py)), source)) {
+      ++stats_.straight_line_bends;
+      kind = probed != 0 ? probed : shorter_bend();
+      path();
+      if (!improves(t, new_dT, new_sigma)) return;
     }
     ++stats_.face_updates;
     if (reached_ && (every_update_ || t.dT == std::numeric_limits<Real>::infinity())) reached_->push_back(face_of(g));
@@ -244,6 +257,43 @@ class UpdateStep {
   void partition(Index me, Index threads, unsigned stripe_shift, std::vector<std::vector<RemoteStep<Real>>>* outbox) {
     own_ = me, threads_ = threads, stripe_shift_ = stripe_shift, outbox_ = outbox;
   }
+  // Whether face record t takes a path of centroid distance dT and sigma. Only a clearly
+  // shorter path counts: an improvement lost in rounding would bounce between faces forever.
+  static bool improves(const FaceRecord<Real>& t, Real dT, Real sigma) {
+    if constexpr (!Partitioned) {
+      (void)sigma;
+      return dT + dT * kRelativeImprovement < t.dT;
+    } else {
+      // Parallel runs: paths within rounding of each other reach a face in any order. One
+      // thread meets them in wavefront order and keeps the first, the straight path; on
+      // several threads a bend past a vertex almost on the straight line, come first, kept the
+      // face and bent everything behind it (a jittered plane: 70-90 faces bent, vertices 3e-4
+      // too far). So here a path takes a face when it is shorter on a coarse scale (the
+      // value's float bits less the last kTieBits: 256 ulps, 3e-5 in single precision; 64
+      // still let a tie that straddles a step go either way, 8e-5 too far on a plane once in
+      // 1200 queries), and on the same step of that scale when less lies behind its virtual
+      // source (fewer bends).
+      // One strict order on (coarse value, sigma): every accepted update lowers it, so the run
+      // ends (a tolerance on both sides, tried first, let two paths take a face from each
+      // other in turn). One thread keeps its rule: the sigma rule there moved the corpus's
+      // benign MRE both ways (p95 0.298% -> 0.317%).
+      const auto coarse_new = coarse(dT), coarse_old = coarse(t.dT);
+      return coarse_new < coarse_old || (coarse_new == coarse_old && sigma < t.sigma);
+    }
+  }
+
+  // Whether `value` (mean edges) at the corner opposite halfedge g (corner cj of its face) is
+  // below the straight line from source `label` in 3D, beyond single precision's reach: the
+  // positions are floats (1e-3 mean edges absolute, 1e-4 relative to spare).
+  bool below_straight_line(Index g, Index cj, Real value, Index label) const {
+    const Index p = line_.triangles[face_of(g)][cj == 0 ? 2 : cj - 1];
+    const float* x = line_.positions + 3 * std::size_t(p);
+    const float* s = line_.sources + 4 * std::size_t(label);
+    const float dx = x[0] - s[0], dy = x[1] - s[1], dz = x[2] - s[2];
+    const float reach = (float(value) + 1e-3f) * 1.0001f - s[3];
+    return reach < 0 || reach * reach < dx * dx + dy * dy + dz * dz;
+  }
+
   Index owner_of(Index face) const {
     const Index stripe = face >> stripe_shift_;
     return threads_ == 2 ? (stripe & 1) : stripe % threads_;
@@ -266,6 +316,7 @@ class UpdateStep {
   const Index* ring_;
   ProbeTable<Real> probe_;
   Real limit_;
+  StraightLineTest line_;
   std::vector<Index>* reached_ = nullptr;
   bool every_update_ = false;
   Index own_ = 0, threads_ = 1;

@@ -26,12 +26,16 @@ template <class Real>
 void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                                      std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal,
                                      PropagationStats& stats, std::vector<Index>* seeded,
-                                     std::vector<Index>* reached, bool every_update) const {
+                                     std::vector<Index>* reached, const float* line_sources,
+                                     bool every_update) const {
   const std::vector<double>& length = tri.length;
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
-  detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats);
+  detail::StraightLineTest line;
+  if (line_sources && options.straight_line_test && !line_positions.empty())
+    line = {tri.triangles().data(), line_positions.data(), line_sources};
+  detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats, line);
   step.collect_reached(reached, every_update);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   const unsigned threads = goal || reached ? 1 : query_threads(options, mesh().num_faces());
@@ -46,7 +50,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
       detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
                                          limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
                                          stats, options.strategy == Strategy::speed_limiter_postpone,
-                                         options.strategy == Strategy::speed_limiter);
+                                         options.strategy == Strategy::speed_limiter, line);
       return;
     }
     switch (options.strategy) {
@@ -150,7 +154,8 @@ template <class Real>
 void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const GeodesicOptions& options,
                                           FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
                                           std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                                          PropagationStats& stats, unsigned threads) const {
+                                          PropagationStats& stats, const float* line_sources,
+                                          unsigned threads) const {
   const double scale = 1.0 / mean_edge;
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale)
                                                          : std::numeric_limits<Real>::infinity();
@@ -167,7 +172,8 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
     stats.pseudo_sources += lowered.size();
     seed_pseudo_sources(tri, lowered, vmin, 1.0, vlabel, state, queue, changed_faces, nullptr);
     if (queue.empty()) return;
-    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, /*every_update=*/true);
+    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources,
+                    /*every_update=*/true);
     // The changed faces' corners, and the vertices they lower: where the next round starts.
     changed_vertices.clear();
     for (Index f : changed_faces)

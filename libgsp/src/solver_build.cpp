@@ -6,6 +6,7 @@
 #include "parallel_propagation.hpp"
 #include "side_by_side.hpp"
 #include "solver_impl.hpp"
+#include "straight_line_bound.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
@@ -243,6 +244,10 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
           build_delaunay(true);   // its last tables on two threads too (the analysis ends first)
           timings.delaunay = lap();
         });
+  }
+  if (!custom_lengths) {
+    line_centre = bounding_box(mesh()).center();
+    line_positions = detail::scaled_positions(mesh().positions, 1.0 / mean_edge, line_centre);
   }
   const auto t2 = Clock::now();
   timings.layout = std::chrono::duration<double>(t1 - t0).count();

@@ -149,6 +149,10 @@ struct GeodesicSolver::Impl {
   std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
   double mean_edge = 1;
   bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
+  // The vertices in 3D for the update step's straight-line test (straight_line_bound.hpp:
+  // mean edges from line_centre, floats); empty with caller-supplied lengths.
+  std::vector<float> line_positions;
+  Vec3 line_centre;
   VisibilityHeuristic heuristic;
   SolverTimings timings;
 
@@ -229,7 +233,7 @@ struct GeodesicSolver::Impl {
   template <class Real>
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                      PropagationStats& stats, unsigned threads = 1) const;
+                      PropagationStats& stats, const float* line_sources, unsigned threads = 1) const;
   // Seeds the fans of `vertices` with a virtual source at the vertex, sigma = d[v] *
   // to_normalised; the faces that took it go to `changed` (and the queue), every face offered
   // one to `touched` when given.
@@ -250,11 +254,17 @@ struct GeodesicSolver::Impl {
   };
   template <class Real>
   void relax_local(const GeodesicOptions& options, FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
-                   LocalValues values, PropagationStats& stats) const;
+                   LocalValues values, PropagationStats& stats, const float* line_sources) const;
+  // line_sources: the query's sources for the update step's straight-line test
+  // (line_sources_for(); null: no test).
   template <class Real>
   void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,
-                 std::vector<Index>* seeded, std::vector<Index>* reached, bool every_update = false) const;
+                 std::vector<Index>* seeded, std::vector<Index>* reached, const float* line_sources,
+                 bool every_update = false) const;
+  // The sources in 3D as the straight-line test reads them (straight_line_bound.hpp); empty
+  // with caller-supplied lengths.
+  std::vector<float> line_sources_for(const std::vector<Source>& sources) const;
 };
 
 // Seeds face f with a source at barycentric point b of the face (canonical coordinates are

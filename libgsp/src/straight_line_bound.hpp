@@ -46,6 +46,27 @@ inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const In
   return out;
 }
 
+// The same bound inside the propagation (propagation.hpp, StraightLineTest): the vertices and
+// the sources in 3D, in mean edge lengths from the centre of the mesh's bounding box, in single
+// precision (4 floats per source: x, y, z, offset). Not for caller-supplied lengths.
+inline std::vector<float> scaled_positions(const std::vector<Vec3>& positions, double scale, Vec3 centre) {
+  std::vector<float> out(3 * positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Vec3 p = (positions[i] - centre) * scale;
+    out[3 * i] = float(p.x), out[3 * i + 1] = float(p.y), out[3 * i + 2] = float(p.z);
+  }
+  return out;
+}
+inline std::vector<float> scaled_sources(const std::vector<SourcePoint>& sources, double scale, Vec3 centre) {
+  std::vector<float> out;
+  out.reserve(4 * sources.size());
+  for (const SourcePoint& s : sources) {
+    const Vec3 p = (s.position - centre) * scale;
+    out.insert(out.end(), {float(p.x), float(p.y), float(p.z), float(s.offset * scale)});
+  }
+  return out;
+}
+
 // Raises the values below the bound at their vertex to it (and sets the label to the nearest
 // source by the bound); unreached (+inf) values are left. Value i belongs to vertex ids[i]
 // (ids == nullptr: vertex i) of `positions`. The values are in the propagation's units

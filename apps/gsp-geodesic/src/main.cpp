@@ -44,6 +44,7 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["relaxed_vertices"] = r.stats.relaxed_vertices;
   ops["pseudo_sources"] = r.stats.pseudo_sources;
   ops["relaxation_rounds"] = r.stats.relaxation_rounds;
+  ops["straight_line_bends"] = r.stats.straight_line_bends;
   ops["raised_to_line"] = r.stats.raised_to_line;
 }
 

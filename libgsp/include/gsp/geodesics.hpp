@@ -103,6 +103,11 @@ struct GeodesicOptions {
   // the nearest source (plus its offset); vertex values below it are raised to it, last.
   // Ignored with SolverOptions::edge_lengths (a metric is not bounded by 3D segments).
   bool straight_line_bound = true;
+  // The same bound inside the update step (docs/gsp-core.md, rule 8): a straight update that
+  // would put a face's new corner below the segment from its source bends instead, so the
+  // wrong value is not passed on. Off only to measure what it changes (gsp-bench's
+  // gsp-no-line-test). Ignored with SolverOptions::edge_lengths.
+  bool straight_line_test = true;
 };
 
 // The virtual source a face ended up with: the geodesic to any point p of the face is the
@@ -129,8 +134,12 @@ struct PropagationStats {
   std::uint64_t relaxed_vertices = 0;
   std::uint64_t pseudo_sources = 0;
   std::uint64_t relaxation_rounds = 0;
+  // Straight updates that would have put a face's corner below the straight line from its
+  // source (in 3D) and bent instead (docs/gsp-core.md, rule 8; not with caller-supplied lengths).
+  std::uint64_t straight_line_bends = 0;
   // Vertices whose value was below the straight line from the nearest source by more than
-  // 1e-6 and were raised to it (GeodesicOptions::straight_line_bound).
+  // 1e-6 and were raised to it (GeodesicOptions::straight_line_bound): the safety net after
+  // the propagation, which rule 8 leaves almost nothing to do.
   std::uint64_t raised_to_line = 0;
   bool double_precision = false;     // the precision the query ran in (Precision::automatic decides)
   bool switched_to_postpone = false; // the speed limiter turned into speed_limiter_postpone (see Strategy)
