@@ -8,6 +8,7 @@
 #include "state_allocator.hpp"
 
 #include <gsp/heuristic.hpp>
+#include <gsp/intrinsic/corner_rules.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/types.hpp>
 
@@ -63,9 +64,12 @@ template <class Real>
 struct ProbeTable {
   Real c, g, hh, hg;
   Real lambda[16];
+  Real saddle_loose;   // rule 7's probe (gsp/intrinsic/corner_rules.hpp)
 
-  explicit ProbeTable(const VisibilityHeuristic& h)
-      : c(Real(h.c)), g(Real(h.g)), hh(Real(h.hh)), hg(Real(h.hg)) {
+  // delaunay: the faces are an intrinsic Delaunay triangulation (rule 7's looser probe).
+  ProbeTable(const VisibilityHeuristic& h, bool delaunay)
+      : c(Real(h.c)), g(Real(h.g)), hh(Real(h.hh)), hg(Real(h.hg)),
+        saddle_loose(Real(delaunay ? intrinsic::kSaddleLooseLambda : intrinsic::kSaddleLooseLambdaInputFaces)) {
     for (int i = 0; i < 16; ++i) lambda[i] = Real(h.lambda[i]);
   }
   // lambda for the face with edge lengths len entered over an edge of length e1, height h.

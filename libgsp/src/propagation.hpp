@@ -185,7 +185,7 @@ class UpdateStep {
       if (kind != 0) {
         const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
         auto within_flat_miss = [&] { return (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span; };
-        kind = intrinsic::reconsider_bend(kind, t.corner_kind(end), within_flat_miss, crossing);
+        kind = intrinsic::reconsider_bend(kind, t.corner_kind(end), probe_.saddle_loose, within_flat_miss, crossing);
       }
       if (kind == 0 && e1 > 0)
         kind = intrinsic::straight_past_saddles(t.saddle_corner(cj), t.saddle_corner(cj == 2 ? 0 : cj + 1), crossing);

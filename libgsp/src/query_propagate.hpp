@@ -35,7 +35,8 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   detail::StraightLineTest line;
   if (line_sources && options.straight_line_test && !line_positions.empty())
     line = {tri.triangles().data(), line_positions.data(), line_sources};
-  detail::UpdateStep<Real> step(state, tri.ring.data(), detail::ProbeTable<Real>(heuristic), limit, stats, line);
+  const detail::ProbeTable<Real> probe(heuristic, tri.delaunay);
+  detail::UpdateStep<Real> step(state, tri.ring.data(), probe, limit, stats, line);
   step.collect_reached(reached, every_update);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   const unsigned threads = goal || reached ? 1 : query_threads(options, mesh().num_faces());
@@ -47,7 +48,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
     using detail::Postpone;
     if (goal) return detail::run_targeted(step, queue, *goal, stats);
     if (parallel) {
-      detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), detail::ProbeTable<Real>(heuristic),
+      detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), probe,
                                          limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
                                          stats, options.strategy == Strategy::speed_limiter_postpone,
                                          options.strategy == Strategy::speed_limiter, line);

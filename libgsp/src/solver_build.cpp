@@ -72,8 +72,12 @@ void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   // A generous cap: Delaunay flipping ends after finitely many flips, but float-stored slivers
   // can make near-ties flip back and forth; the result is good long before the cap.
   flips = detail::make_intrinsic_delaunay(t, 20 * t.length.size());
-  if (flips == 0 && t.reoriented == 0) return;   // a soup needing no flips still gets one winding
+  if (flips == 0 && t.reoriented == 0) {   // a soup needing no flips still gets one winding
+    input.delaunay = true;                   // the input is Delaunay as it is
+    return;
+  }
   delaunay = std::make_unique<Triangulation>();
+  delaunay->delaunay = true;
   delaunay->own_triangles = std::move(t.triangles);
   delaunay->length = std::move(t.length);
   // Three tables from the flipped faces, two of them apart from the third.

@@ -42,6 +42,7 @@ struct Triangulation {
   std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
   bool needs_double = false;              // a face too thin for float lengths (Precision::automatic)
+  bool delaunay = false;                  // intrinsic Delaunay (flipped, or the input needed no flip)
 
   mutable std::atomic<bool> float_started{false}, double_started{false};   // a full query began
   mutable std::once_flag float_once, double_once;

@@ -342,7 +342,8 @@ class Propagation {
         return NR.y > eps ? 0 : crossing_through(R, NR);
       };
       if (kind != 0)
-        kind = intrinsic::reconsider_bend(kind, kind == 1 ? kind_a : kind_b,
+        // The kernel runs on the mesh's own triangles (no intrinsic flips): rule 7's stricter probe.
+        kind = intrinsic::reconsider_bend(kind, kind == 1 ? kind_a : kind_b, intrinsic::kSaddleLooseLambdaInputFaces,
                                           [&] { return miss <= kFlatMiss * scale_; }, crossing);
       if (kind == 0 && e1 > 0)
         kind = intrinsic::straight_past_saddles(kind_a == intrinsic::kSaddleVertex, kind_b == intrinsic::kSaddleVertex,

@@ -17,11 +17,14 @@ namespace gsp::intrinsic {
 // The strict probe at a saddle end (angle sum over 2 pi (1 + kSaddleExcess)): this far from
 // the opposite corner towards the centroid.
 inline constexpr double kSaddleLambda = 0.75;
-// The loose probe that can overrule a "bend" at a saddle end.
+// The loose probe that can overrule a "bend" at a saddle end: on an intrinsic Delaunay
+// triangulation (the core's default) and on a mesh's own triangles (GSP with the flips off,
+// the line sources' kernel), whose slivers need the stricter one (docs/gsp-core.md, rule 7).
 inline constexpr double kSaddleLooseLambda = 0.15;
+inline constexpr double kSaddleLooseLambdaInputFaces = 0.3;
 
 // A bend at `end_kind`'s vertex (kind 1: at A, 2: at B) reconsidered; returns 0 to go on
-// straight, else `kind`.
+// straight, else `kind`. `saddle_loose`: kSaddleLooseLambda or kSaddleLooseLambdaInputFaces.
 // - flat: every unfolding round the vertex agrees and no geodesic turns there, so straight on
 //   where the probe's line passes the vertex closely (`within_flat_miss()`: it crosses AB's
 //   line at most kFlatMiss mean edges beyond it; farther out it could pass vertices not flat);
@@ -32,11 +35,12 @@ inline constexpr double kSaddleLooseLambda = 0.15;
 // - saddle: a bend is right for the hidden part of the face and over-estimates the rest; the
 //   loose probe has the last word (the table probes needles almost at the opposite corner).
 template <class FlatMiss, class Crossing>
-int reconsider_bend(int kind, std::uint8_t end_kind, FlatMiss&& within_flat_miss, Crossing&& crossing) {
+int reconsider_bend(int kind, std::uint8_t end_kind, double saddle_loose, FlatMiss&& within_flat_miss,
+                    Crossing&& crossing) {
   switch (end_kind) {
     case kFlatVertex: return within_flat_miss() ? 0 : kind;
     case kConvexVertex: return crossing(1.0) == 0 ? 0 : kind;
-    case kSaddleVertex: return crossing(kSaddleLooseLambda) == 0 ? 0 : kind;
+    case kSaddleVertex: return crossing(saddle_loose) == 0 ? 0 : kind;
     default: return kind;
   }
 }
