@@ -82,7 +82,8 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   std::vector<VertexSeed> vertex_seeds;
   seed<Real>(tri, sources, state.data(), queue, vertex_seeds, goal ? &*goal : nullptr, nullptr);
   result.stats.enqueued = queue.size();
-  const std::vector<float> line_sources = line_sources_for(sources);
+  const std::vector<detail::SourcePoint> points = source_points_for(sources, options);
+  const std::vector<float> line_sources = line_sources_for(points, options);
   const float* lines = line_sources.empty() ? nullptr : line_sources.data();
   propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr, lines);
 
@@ -102,16 +103,22 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   // order (positions and values read in sequence).
   if (options.straight_line_bound && !custom_lengths)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        nv, nullptr, mesh().positions, vmin.data(), vlabel.data(), mean_edge, true,
-        detail::source_points(mesh(), maps, sources), threads);
+        nv, nullptr, mesh().positions, vmin.data(), vlabel.data(), mean_edge, true, points, threads);
   gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads);
   return_state(std::move(state));
   return result;
 }
 
-std::vector<float> GeodesicSolver::Impl::line_sources_for(const std::vector<Source>& sources) const {
-  if (line_positions.empty()) return {};
-  return detail::scaled_sources(detail::source_points(mesh(), maps, sources), 1.0 / mean_edge, line_centre);
+std::vector<detail::SourcePoint> GeodesicSolver::Impl::source_points_for(const std::vector<Source>& sources,
+                                                                         const GeodesicOptions& options) const {
+  if (custom_lengths || !(options.straight_line_bound || options.straight_line_test)) return {};
+  return detail::source_points(mesh(), maps, sources);
+}
+
+std::vector<float> GeodesicSolver::Impl::line_sources_for(const std::vector<detail::SourcePoint>& points,
+                                                          const GeodesicOptions& options) const {
+  if (!options.straight_line_test || line_positions.empty()) return {};
+  return detail::scaled_sources(points, 1.0 / mean_edge, line_centre);
 }
 
 GeodesicResult geodesic_distances(const TriangleMesh& mesh, const std::vector<Source>& sources,

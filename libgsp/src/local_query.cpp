@@ -131,7 +131,8 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
 
   seed<Real>(tri, sources, buf.state.data(), buf.queue, ws.vertex_seeds, nullptr, &ws.seeded);
   result.stats.enqueued = buf.queue.size();
-  const std::vector<float> line_sources = line_sources_for(sources);
+  const std::vector<detail::SourcePoint> points = source_points_for(sources, options);
+  const std::vector<float> line_sources = line_sources_for(points, options);
   const float* lines = line_sources.empty() ? nullptr : line_sources.data();
   propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces, lines);
 
@@ -156,7 +157,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   if (options.straight_line_bound && !custom_lengths) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
         ws.vertices.size(), ws.vertices.data(), mesh().positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
-        detail::source_points(mesh(), maps, sources));
+        points);
     // A vertex source's own value is exact and wins, as in compute().
     for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
   }

@@ -33,8 +33,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   const Real inf = std::numeric_limits<Real>::infinity();
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale) : inf;
   detail::StraightLineTest line;
-  if (line_sources && options.straight_line_test && !line_positions.empty())
-    line = {tri.triangles().data(), line_positions.data(), line_sources};
+  if (line_sources) line = {tri.triangles().data(), line_positions.data(), line_sources};
   const detail::ProbeTable<Real> probe(heuristic, tri.delaunay);
   detail::UpdateStep<Real> step(state, tri.ring.data(), probe, limit, stats, line);
   step.collect_reached(reached, every_update);

@@ -7,6 +7,7 @@
 #include "intrinsic_geometry.hpp"
 #include "parallel_ranges.hpp"
 #include "propagation.hpp"
+#include "straight_line_bound.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
@@ -263,9 +264,13 @@ struct GeodesicSolver::Impl {
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,
                  std::vector<Index>* seeded, std::vector<Index>* reached, const float* line_sources,
                  bool every_update = false) const;
-  // The sources in 3D as the straight-line test reads them (straight_line_bound.hpp); empty
-  // with caller-supplied lengths.
-  std::vector<float> line_sources_for(const std::vector<Source>& sources) const;
+  // A query's sources in 3D (straight_line_bound.hpp), for the bound and the update step's
+  // test: empty with caller-supplied lengths or with both switched off.
+  std::vector<detail::SourcePoint> source_points_for(const std::vector<Source>& sources,
+                                                     const GeodesicOptions& options) const;
+  // The same as the update step's test reads them; empty where the test is off.
+  std::vector<float> line_sources_for(const std::vector<detail::SourcePoint>& points,
+                                      const GeodesicOptions& options) const;
 };
 
 // Seeds face f with a source at barycentric point b of the face (canonical coordinates are
