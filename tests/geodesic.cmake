@@ -6,12 +6,7 @@ gsp_test(geodesic_heuristic_test SOURCES geodesic_heuristic_test.cpp DEPS gsp::c
 gsp_test(geodesic_invariants_test SOURCES geodesic_invariants_test.cpp DEPS gsp::core gsp::io)
 gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gsp::io)
 if(GSP_WITH_CGAL)
-  # gsp-bench's midpoint split (compiled in, not copied): the test measures the meshes the
-  # bench's --subdivision midpoint makes.
-  gsp_test(geodesic_accuracy_test
-    SOURCES geodesic_accuracy_test.cpp ${PROJECT_SOURCE_DIR}/apps/gsp-bench/src/subdivide.cpp
-    DEPS gsp::core gsp::io gsp::reference gsp::cgal_adapter)
-  target_include_directories(geodesic_accuracy_test PRIVATE ${PROJECT_SOURCE_DIR}/apps/gsp-bench/src)
+  gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
 endif()
 if(TARGET gsp-geodesic)
   gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io gsp::render)

@@ -2,7 +2,7 @@
 // mean relative error (MRE) over all reachable vertices, averaged over random vertex sources,
 // compared with Dijkstra on edges and the heat method (CGAL, direct) on the same sources.
 #include "helpers/geodesic_fixtures.hpp"
-#include "subdivide.hpp"
+#include "helpers/mesh_builders.hpp"
 #include "test_data.hpp"
 
 #include <gsp/dijkstra.hpp>
@@ -39,7 +39,8 @@ struct Errors {
 
 Errors measure(const std::string& name, int sources, int midpoint_splits = 0) {
   TriangleMesh m = io::read_mesh(shared_mesh(name)).mesh;
-  m = bench::midpoint_subdivide(weld_vertices(m).mesh, midpoint_splits);
+  m = weld_vertices(m).mesh;
+  for (int k = 0; k < midpoint_splits; ++k) m = test::split4(m);
   reference::ExactGeodesicSolver exact(m);
   reference::HeatMethodSolver heat(m);
   const GeodesicSolver gsp(m);
