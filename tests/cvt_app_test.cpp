@@ -111,7 +111,7 @@ TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {
                               " --vertices 250 --iterations 5 --no-smooth --stats - -o " + quote(out.string()),
                           dir, kRemeshLimit);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("component 2 (3 faces) kept as it is: 1 non-manifold edges, 2 non-manifold vertices"),
+  EXPECT_NE(r.err.find("kept as it is: component 2 (3 faces): 1 non-manifold edges, 2 non-manifold vertices"),
             std::string::npos)
       << r.err;
   const JsonValue stats = parse_json(r.out);

@@ -17,6 +17,7 @@ from ._gsp import (
     NoPathError,
     Path,
     PointCloudSolver,
+    RemeshWarning,
     Samples,
     SurfacePoint,
     __version__,
@@ -31,7 +32,7 @@ from ._gsp import (
 from . import metric
 
 __all__ = [
-    "Cvt", "Error", "GeodesicSolver", "NoPathError", "Path", "PointCloudSolver", "Samples", "SurfacePoint",
+    "Cvt", "Error", "GeodesicSolver", "NoPathError", "Path", "PointCloudSolver", "RemeshWarning", "Samples", "SurfacePoint",
     "cvt", "geodesic_distance", "line_distance", "metric", "read_mesh", "read_points", "remesh", "sample",
     "write_mesh", "__version__",
 ]

@@ -2,11 +2,13 @@
 // Delaunay remesh, as gsp-cvt does them.
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "errors.hpp"
 #include "progress.hpp"
 
 #include <gsp/cvt/cvt.hpp>
 #include <gsp/cvt/remesh.hpp>
 #include <gsp/cvt/surface.hpp>
+#include <gsp/errors.hpp>
 
 namespace gsp::python {
 
@@ -79,6 +81,17 @@ py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& ver
     so.remesh.smooth = smooth;
     r = cvt::remesh_surface(mesh, so);
   }
+  // As gsp-cvt: nothing remeshed is an error; some components kept as they were, a warning.
+  const std::vector<std::string> kept = cvt::kept_components(r);
+  if (!kept.empty() && kept.size() == r.components.size())
+    throw TopologyError("no component could be remeshed; " + kept.front() + (kept.size() > 1 ? "; ..." : ""));
+  if (!kept.empty()) {
+    std::string message = "kept " + std::to_string(kept.size()) + " of " + std::to_string(r.components.size()) +
+                          " components as they were: " + kept.front();
+    for (std::size_t i = 1; i < kept.size() && i < 5; ++i) message += "; " + kept[i];
+    if (kept.size() > 5) message += "; ...";
+    warn_remesh(message);
+  }
   return py::make_tuple(to_array(std::move(r.mesh.positions)), to_array(r.mesh.triangles));
 }
 
@@ -112,8 +125,9 @@ is called per iteration; Ctrl-C stops it.)");
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
 component is remeshed on its own (vertices by area); one that cannot be (non-manifold edges,
-not orientable, too small a share, a remesh without its topology) is returned as it is, as
-gsp-cvt does. flip and smooth are the angle-raising post-passes. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
+not orientable, too small a share, a remesh without its topology) is returned as it is, with
+a gsp.RemeshWarning naming it and the reason; ValueError when no component could be
+remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
 }
 
 }  // namespace gsp::python

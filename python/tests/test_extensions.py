@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import gsp
-from conftest import grid, shared_mesh
+from conftest import grid, icosphere, shared_mesh
 
 
 def test_line_distance_on_a_plane(plane):
@@ -89,3 +89,30 @@ def test_cvt_labels(fertility):
     assert len(c.sites) >= 200 and c.labels.shape == (len(V),)
     assert c.labels.min() >= 0 and c.labels.max() < len(c.sites)
     assert c.energy_curve[-1] <= c.energy_curve[0]
+
+
+def _book():
+    # Three triangles on one edge (0-1): a non-manifold "book" no remesh can keep.
+    V = np.array([[0, 0, 0], [0, 0, 1], [1, 0, 0.5], [-1, 0, 0.5], [0, 1, 0.5]], dtype=float)
+    F = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    return V, F
+
+
+def test_remesh_of_nothing_remeshable_raises():
+    V, F = _book()
+    with pytest.raises(ValueError, match=r"no component could be remeshed; component 0 \(3 faces\): 1 non-manifold edges"):
+        gsp.remesh(V, F, vertices=50)
+
+
+def test_remesh_warns_for_the_components_it_keeps():
+    # A sphere and, apart from it, the book: the sphere is remeshed, the book comes back as it
+    # was, with a gsp.RemeshWarning naming it.
+    V, F = icosphere(2)
+    BV, BF = _book()
+    V2 = np.vstack([V, BV + [4, 0, 0]])
+    F2 = np.vstack([F, BF + len(V)])
+    with pytest.warns(gsp.RemeshWarning, match=r"kept 1 of 2 components as they were: component 1 \(3 faces\): 1 non-manifold edges"):
+        RV, RF = gsp.remesh(V2, F2, vertices=120, iterations=5)
+    kept = BV + [4, 0, 0]
+    assert all(np.any(np.all(np.isclose(RV, p), axis=1)) for p in kept)   # the book, as it was
+    assert len(RF) > 100                                                   # and the sphere, remeshed

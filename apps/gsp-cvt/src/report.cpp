@@ -109,20 +109,14 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
 }
 
 void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) {
-  const std::size_t kept = r.components.size() - r.remeshed();
-  std::size_t noted = 0;
-  for (std::size_t i = 0; i < r.components.size(); ++i) {
-    const cvt::ComponentReport& c = r.components[i];
-    if (c.outcome == cvt::ComponentOutcome::remeshed) continue;
-    const std::string what = "component " + std::to_string(i) + " (" + std::to_string(c.input_faces) + " faces)";
-    if (kept == r.components.size())
-      throw Error("no component could be remeshed; " + what + ": " + c.reason + (kept > 1 ? "; ..." : ""));
-    if (++noted <= 20) ctx.note(what + " kept as it is: " + c.reason);
-  }
+  const std::vector<std::string> kept = cvt::kept_components(r);
+  if (!kept.empty() && kept.size() == r.components.size())
+    throw Error("no component could be remeshed; " + kept.front() + (kept.size() > 1 ? "; ..." : ""));
+  for (std::size_t i = 0; i < kept.size() && i < 20; ++i) ctx.note("kept as it is: " + kept[i]);
   if (r.vertices_split)
     ctx.note(std::to_string(r.vertices_split) +
              " vertices where fans of faces only touched were split (one per fan) before remeshing");
-  if (noted > 20) ctx.note(std::to_string(noted - 20) + " more components kept as they are (--stats lists them)");
+  if (kept.size() > 20) ctx.note(std::to_string(kept.size() - 20) + " more components kept as they are (--stats lists them)");
 }
 
 void report_quality(cli::Context& ctx, const cvt::MeshQuality& q, const cvt::HausdorffDistance& h) {

@@ -126,6 +126,16 @@ std::size_t SurfaceRemeshResult::remeshed() const {
                                    [](const ComponentReport& c) { return c.outcome == ComponentOutcome::remeshed; }));
 }
 
+std::vector<std::string> kept_components(const SurfaceRemeshResult& r) {
+  std::vector<std::string> lines;
+  for (std::size_t i = 0; i < r.components.size(); ++i) {
+    const ComponentReport& c = r.components[i];
+    if (c.outcome == ComponentOutcome::remeshed) continue;
+    lines.push_back("component " + std::to_string(i) + " (" + std::to_string(c.input_faces) + " faces): " + c.reason);
+  }
+  return lines;
+}
+
 SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemeshOptions& options) {
   validate(mesh);
   const CvtOptions& co = options.cvt;

@@ -70,6 +70,10 @@ struct SurfaceRemeshResult {
   std::size_t remeshed() const;
 };
 
+// "component I (N faces): reason" for each component kept as it was, in component order; how
+// the app's notes and the Python package's warning name them (empty when all were remeshed).
+std::vector<std::string> kept_components(const SurfaceRemeshResult& r);
+
 // Throws InvalidInput for contradictory options (as compute_cvt) or a mesh without area.
 SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemeshOptions& options);
 
