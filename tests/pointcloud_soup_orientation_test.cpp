@@ -87,6 +87,29 @@ TEST(SoupOrientation, HalfFlippedClosedMeshIsWoundOutwardsAgain) {
   }
 }
 
+// Consistently wound patches (the common input) take a shortcut with the same answer: each
+// patch on its own, a closed one wound outwards. Two copies of fertility apart, the second
+// wound inwards, and a face left out: only the second copy turns.
+TEST(SoupOrientation, ConsistentPatchesAreWoundEachOnItsOwn) {
+  const TriangleMesh m = fertility();
+  TriangleMesh two = m;
+  for (const Vec3& p : m.positions) two.positions.push_back(p + Vec3{500, 0, 0});
+  const Index n = Index(m.num_vertices());
+  for (Triangle t : m.triangles) two.triangles.push_back({t[0] + n, t[2] + n, t[1] + n});
+  detail::IntrinsicTriangulation t = from_mesh(two);
+  t.positions = &two.positions;
+  t.skipped[0] = true;   // the first copy opens up: wound outwards still
+  const std::vector<Triangle> before = t.triangles;
+  EXPECT_EQ(detail::orient_consistently(t), m.num_faces());
+  for (std::size_t f = 0; f < two.num_faces(); ++f) {
+    const Triangle& a = t.triangles[f];
+    const Triangle& b = before[f];
+    if (f < m.num_faces()) EXPECT_EQ(a, b);
+    else EXPECT_EQ(a, (Triangle{b[0], b[2], b[1]}));
+  }
+  for (Index h = 0; h < Index(t.length.size()); ++h) EXPECT_EQ(t.ring[t.ring[h]], h);
+}
+
 TEST(SoupOrientation, WithoutPositionsTheMajorityWindingWins) {
   const TriangleMesh m = fertility();
   std::vector<Index> original_of;

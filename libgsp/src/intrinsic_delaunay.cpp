@@ -82,11 +82,32 @@ bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& pat
   return v < 0;
 }
 
-}  // namespace
+// Reverses the marked faces: (a, b, c) -> (a, c, b), halfedge slots 0 and 2 trade places,
+// slot 1 keeps its edge.
+void reverse_faces(IntrinsicTriangulation& t, const std::vector<bool>& flip_face, std::size_t count) {
+  t.reoriented = count;
+  if (count == 0) return;
+  const Index nf = Index(t.triangles.size()), nh = Index(t.length.size());
+  auto moved = [&](Index h) {
+    if (!flip_face[face_of(h)] || corner_of(h) == 1) return h;
+    return corner_of(h) == 0 ? h + 2 : h - 2;
+  };
+  std::vector<double> length(nh);
+  std::vector<Index> ring(nh);
+  for (Index h = 0; h < nh; ++h) {
+    length[moved(h)] = t.length[h];
+    ring[moved(h)] = moved(t.ring[h]);
+  }
+  t.length = std::move(length);
+  t.ring = std::move(ring);
+  for (Index f = 0; f < nf; ++f)
+    if (flip_face[f]) std::swap(t.triangles[f][1], t.triangles[f][2]);
+}
 
-std::size_t orient_consistently(IntrinsicTriangulation& t) {
+// Any winding: each patch grown face by face from its first face (the first visit decides a
+// face's winding relative to it), then wound as invert_patch says.
+std::size_t orient_patches(IntrinsicTriangulation& t) {
   const Index nf = Index(t.triangles.size());
-  const Index nh = Index(t.length.size());
   // Per face: reverse relative to its patch's first face; patches grown across two-face edges.
   std::vector<std::int8_t> reverse(nf, -1);
   std::vector<Index> patch, stack;
@@ -121,31 +142,102 @@ std::size_t orient_consistently(IntrinsicTriangulation& t) {
     for (Index f : patch)
       if (bool(reverse[f]) != invert) flip_face[f] = true, ++count;
   }
-  if (count > 0) {
-    // (a, b, c) -> (a, c, b): halfedge slots 0 and 2 trade places, slot 1 keeps its edge.
-    auto moved = [&](Index h) {
-      if (!flip_face[face_of(h)] || corner_of(h) == 1) return h;
-      return corner_of(h) == 0 ? h + 2 : h - 2;
-    };
-    std::vector<double> length(nh);
-    std::vector<Index> ring(nh);
-    for (Index h = 0; h < nh; ++h) {
-      length[moved(h)] = t.length[h];
-      ring[moved(h)] = moved(t.ring[h]);
-    }
-    t.length = std::move(length);
-    t.ring = std::move(ring);
-    for (Index f = 0; f < nf; ++f)
-      if (flip_face[f]) std::swap(t.triangles[f][1], t.triangles[f][2]);
-  }
-  t.reoriented = count;
+  reverse_faces(t, flip_face, count);
   return count;
+}
+
+// Already consistent across every two-face edge (how most meshes come): the patches are the
+// components over those edges, no face turns within one, and each patch is wound as
+// invert_patch says for a patch with no reversed face. The same answer as orient_patches,
+// from passes in face order (the face-by-face growth reads the mesh in a random order: 0.4 s
+// of a 2.2M-vertex preparation). False, changing nothing, when some edge is inconsistent.
+bool orient_consistent_patches(IntrinsicTriangulation& t) {
+  const Index nf = Index(t.triangles.size());
+  std::vector<Index> patch(nf);   // union-find over faces, then each face's patch number
+  for (Index f = 0; f < nf; ++f) patch[f] = f;
+  auto find = [&](Index x) {
+    while (patch[x] != x) x = patch[x] = patch[patch[x]];
+    return x;
+  };
+  std::vector<bool> open_face(nf, false);   // a boundary, non-manifold or skipped-neighbour edge
+  for (Index f = 0; f < nf; ++f) {
+    if (t.skipped[f]) continue;
+    for (Index i = 0; i < 3; ++i) {
+      const Index h = 3 * f + i, g = t.ring[h];
+      if (g == h || t.ring[g] != h) {
+        open_face[f] = true;
+        continue;
+      }
+      const Index n = face_of(g);
+      if (t.skipped[n]) {
+        open_face[f] = true;
+        continue;
+      }
+      if (n == f || h > g) continue;
+      if (same_direction(t, h, g)) return false;
+      const Index a = find(f), b = find(n);
+      if (a != b) patch[std::max(a, b)] = std::min(a, b);   // the root: the patch's first face
+    }
+  }
+  // Roots, then patch numbers in face order (a root precedes the other faces of its patch).
+  for (Index f = 0; f < nf; ++f) patch[f] = find(f);
+  Index patches = 0;
+  for (Index f = 0; f < nf; ++f) patch[f] = patch[f] == f ? patches++ : patch[patch[f]];
+  std::vector<bool> flip_face(nf, false);
+  std::size_t count = 0;
+  if (t.positions) {
+    const std::vector<Vec3>& p = *t.positions;
+    std::vector<Index> faces(patches, 0);
+    std::vector<char> open(patches, 0);
+    for (Index f = 0; f < nf; ++f) {
+      if (t.skipped[f]) continue;
+      ++faces[patch[f]];
+      open[patch[f]] |= char(open_face[f]);
+    }
+    // invert_patch for a patch with no reversed face: closed, the sign of its signed volume
+    // (0: keep); open, the sign of the volume about its centroid where that is clear, else keep.
+    std::vector<double> volume(patches, 0.0), tetrahedra(patches, 0.0);
+    std::vector<Vec3> centre(patches, Vec3{0, 0, 0});
+    for (Index f = 0; f < nf; ++f) {
+      if (t.skipped[f]) continue;
+      const Index k = patch[f];
+      const Triangle& c = t.triangles[f];
+      if (!open[k]) volume[k] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
+      else
+        for (Index x : c) centre[k] = centre[k] + (1.0 / (3.0 * double(faces[k]))) * p[x];
+    }
+    for (Index f = 0; f < nf; ++f) {
+      if (t.skipped[f] || !open[patch[f]]) continue;
+      const Index k = patch[f];
+      const Triangle& c = t.triangles[f];
+      const Vec3 a = p[c[0]] - centre[k], b = p[c[1]] - centre[k], d = p[c[2]] - centre[k];
+      const double x = dot(a, cross(b, d));
+      volume[k] += x;
+      tetrahedra[k] += std::abs(x);
+    }
+    for (Index f = 0; f < nf; ++f) {
+      if (t.skipped[f]) continue;
+      const Index k = patch[f];
+      const bool invert = open[k] ? std::abs(volume[k]) >= 0.25 * tetrahedra[k] && volume[k] < 0 : volume[k] < 0;
+      if (invert) flip_face[f] = true, ++count;
+    }
+  }
+  reverse_faces(t, flip_face, count);
+  return true;
+}
+
+}  // namespace
+
+std::size_t orient_consistently(IntrinsicTriangulation& t) {
+  if (!orient_consistent_patches(t)) orient_patches(t);
+  return t.reoriented;
 }
 
 std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
   orient_consistently(t);
   const Index nh = Index(t.length.size());
   std::vector<Index> stack;
+  stack.reserve(nh / 2);   // every edge once to begin with: grown in place, not copied as it grows
   std::vector<char> queued(nh, 0);
   for (Index h = 0; h < nh; ++h)
     if (flippable_twin(t, h) != kInvalidIndex && h < t.ring[h]) stack.push_back(h), queued[h] = 1;
