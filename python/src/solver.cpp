@@ -2,6 +2,8 @@
 // points, labels, distance matrices, distances at surface points.
 #include "solver.hpp"
 
+#include "core_slots.hpp"
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "metric.hpp"
@@ -125,6 +127,7 @@ GeodesicResult Solver::compute(const std::vector<Source>& sources, GeodesicOptio
     ~InFlight() { n.fetch_sub(1); }
   } guard(in_flight_);
   if (options.threads == 0 && guard.before > 0) options.threads = 1;
+  const CoreSlot slot;
   return solver_.compute(sources, options);
 }
 

@@ -48,3 +48,37 @@ def test_threads_give_the_same_results():
         t.join()
     for got, want in zip(results, expected):
         np.testing.assert_array_equal(got, want)
+
+
+def test_more_threads_than_cores_all_finish_with_the_same_results():
+    # Queries beyond one per core wait for a free core (docs/python.md, "Threads"): every one
+    # still runs, on two solvers at once, with failing calls among them.
+    V, F = icosphere(4)
+    solvers = [gsp.GeodesicSolver(V, F), gsp.GeodesicSolver(V, F, intrinsic_delaunay=False)]
+    sources = list(range(0, 2400, 150))
+    expected = [[s.distance(v, threads=1) for v in sources] for s in solvers]
+    results, errors = {}, []
+
+    def work(k, i):
+        try:
+            results[k, i] = solvers[k].distance(sources[i])
+        except Exception as e:   # noqa: BLE001 - collected and asserted below
+            errors.append(e)
+
+    def fail():
+        try:
+            solvers[0].distance(0, strategy="no-such-strategy")
+        except ValueError:
+            pass
+
+    threads = [threading.Thread(target=fail) for _ in range(4)]
+    threads += [threading.Thread(target=work, args=(k, i)) for k in range(2) for i in range(len(sources))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(timeout=60)
+    assert not any(t.is_alive() for t in threads)
+    assert errors == []
+    for k in range(2):
+        for i in range(len(sources)):
+            np.testing.assert_array_equal(results[k, i], expected[k][i])
