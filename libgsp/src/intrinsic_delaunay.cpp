@@ -236,15 +236,37 @@ std::size_t orient_consistently(IntrinsicTriangulation& t) {
 std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
   orient_consistently(t);
   const Index nh = Index(t.length.size());
-  std::vector<Index> stack;
-  stack.reserve(nh / 2);   // every edge once to begin with: grown in place, not copied as it grows
+  // The flips run as from one stack that begins with every flippable edge (once, by its smaller
+  // halfedge slot, in slot order) and gets the outer edges of each flip pushed on top: LIFO, so
+  // the order (and with near-cocircular ties, the triangulation) is that stack's. The initial
+  // part is walked by a cursor from the top slot down instead of being stored (an entry per
+  // edge), and an edge found Delaunay in the first pass is passed over when the cursor reaches
+  // it unless a flip has changed one of its faces since (nothing it depends on can change
+  // otherwise): one test per edge instead of two.
+  constexpr char kPending = 1, kPendingDelaunay = 2;   // in the stack; the latter Delaunay as first seen
   std::vector<char> queued(nh, 0);
-  for (Index h = 0; h < nh; ++h)
-    if (flippable_twin(t, h) != kInvalidIndex && h < t.ring[h]) stack.push_back(h), queued[h] = 1;
+  for (Index h = 0; h < nh; ++h) {
+    const Index g = flippable_twin(t, h);
+    if (g != kInvalidIndex && h < t.ring[h]) queued[h] = is_delaunay(t, h, g) ? kPendingDelaunay : kPending;
+  }
+  std::vector<char> changed(t.triangles.size(), 0);   // faces a flip has rewritten
+  std::vector<Index> stack;                            // pushed by flips, above the initial part
+  Index cursor = nh;                                   // the initial part: slots below it
   std::size_t flips = 0;
-  while (!stack.empty() && flips < max_flips) {
-    const Index h = stack.back();
-    stack.pop_back();
+  while (flips < max_flips) {
+    Index h;
+    if (!stack.empty()) {
+      h = stack.back();
+      stack.pop_back();
+    } else {
+      while (cursor > 0 && !queued[cursor - 1]) --cursor;
+      if (cursor == 0) break;
+      h = --cursor;
+      if (queued[h] == kPendingDelaunay && !changed[face_of(h)] && !changed[face_of(t.ring[h])]) {
+        queued[h] = 0;
+        continue;
+      }
+    }
     queued[h] = 0;
     const Index g = flippable_twin(t, h);
     if (g == kInvalidIndex || is_delaunay(t, h, g)) continue;
@@ -304,8 +326,9 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
     t.ring[base1 + 2] = base2 + 2;
     t.ring[base2 + 2] = base1 + 2;
     ++flips;
+    changed[f1] = changed[f2] = 1;
     for (Index x : {base1 + 0, base1 + 1, base2 + 0, base2 + 1})
-      if (!queued[x] && flippable_twin(t, x) != kInvalidIndex) stack.push_back(x), queued[x] = 1;
+      if (!queued[x] && flippable_twin(t, x) != kInvalidIndex) stack.push_back(x), queued[x] = kPending;
   }
   return flips;
 }
