@@ -87,7 +87,7 @@ TEST(VertexKinds, FlatOnlyInsideFlatRegions) {
   // is flat (it lies on an old edge or inside an old face), but only those with no old
   // vertex among their neighbours count as flat; the others are plain.
   const TriangleMesh ico = test::icosphere(1);
-  const TriangleMesh m = test::split4(test::split4(ico));
+  const TriangleMesh m = midpoint_subdivide(midpoint_subdivide(ico));
   const Index old_count = Index(ico.num_vertices());
   std::vector<bool> next_to_old(m.num_vertices(), false);
   for (const Triangle& t : m.triangles)

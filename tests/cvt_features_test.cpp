@@ -42,7 +42,7 @@ TEST(CvtFeatures, BoxHasTwelveCreasesEightCornersTwelveCurves) {
   for (const auto& c : f.curves) EXPECT_EQ(c.size(), 2u);
 
   // Split 1-to-4: every crease is two edges, the curves run corner to corner through the midpoint.
-  const cvt::Features g = cvt::detect_features(test::split4(box(1, 2, 3)));
+  const cvt::Features g = cvt::detect_features(midpoint_subdivide(box(1, 2, 3)));
   EXPECT_EQ(g.edges.size(), 24u);
   EXPECT_EQ(g.corners.size(), 8u);
   ASSERT_EQ(g.curves.size(), 12u);

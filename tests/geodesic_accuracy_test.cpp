@@ -40,7 +40,7 @@ struct Errors {
 Errors measure(const std::string& name, int sources, int midpoint_splits = 0) {
   TriangleMesh m = io::read_mesh(shared_mesh(name)).mesh;
   m = weld_vertices(m).mesh;
-  for (int k = 0; k < midpoint_splits; ++k) m = test::split4(m);
+  for (int k = 0; k < midpoint_splits; ++k) m = midpoint_subdivide(m);
   reference::ExactGeodesicSolver exact(m);
   reference::HeatMethodSolver heat(m);
   const GeodesicSolver gsp(m);

@@ -28,7 +28,7 @@ const GeodesicSolver& solver(int splits) {
   auto& s = cache[splits];
   if (!s) {
     TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
-    for (int i = 0; i < splits; ++i) m = test::split4(m);
+    for (int i = 0; i < splits; ++i) m = midpoint_subdivide(m);
     s = std::make_unique<GeodesicSolver>(m);
   }
   return *s;

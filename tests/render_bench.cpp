@@ -33,7 +33,7 @@ const render::Scene& big_scene() {
     render::Scene s;
     const std::string bunny = test::shared_mesh("stanford_bunny.obj");
     if (std::filesystem::exists(bunny)) {
-      s.mesh = test::split4(test::split4(io::read_mesh(bunny).mesh));
+      s.mesh = midpoint_subdivide(midpoint_subdivide(io::read_mesh(bunny).mesh));
     } else {
       s.mesh = test::icosphere(8);
     }

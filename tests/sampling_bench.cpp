@@ -28,7 +28,7 @@ double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 const sampling::Sampler& sampler() {
   static const TriangleMesh mesh = [] {
     TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
-    for (int i = 0; i < 4; ++i) m = test::split4(m);
+    for (int i = 0; i < 4; ++i) m = midpoint_subdivide(m);
     return m;
   }();
   static const sampling::Sampler s(mesh);

@@ -3,11 +3,11 @@
 // gsp::TriangleMesh whose counts and topology are stated in its comment. Faces are oriented
 // counter-clockwise seen from outside (or from +z for flat meshes) unless stated otherwise.
 #include <gsp/mesh.hpp>
+#include <gsp/subdivide.hpp>   // midpoint_subdivide: fine meshes of known geometry
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <map>
 #include <utility>
 
@@ -193,29 +193,6 @@ inline TriangleMesh explode(const TriangleMesh& mesh) {
     m.triangles.push_back({base, base + 1, base + 2});
   }
   return m;
-}
-
-// Midpoint subdivision: every triangle into four, new vertices at edge midpoints (not moved).
-inline TriangleMesh split4(const TriangleMesh& m) {
-  TriangleMesh out;
-  out.positions = m.positions;
-  std::unordered_map<std::uint64_t, Index> mid;
-  mid.reserve(m.triangles.size() * 2);
-  auto midpoint = [&](Index a, Index b) {
-    const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-    auto [it, fresh] = mid.emplace(key, Index(out.positions.size()));
-    if (fresh) out.positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
-    return it->second;
-  };
-  out.triangles.reserve(4 * m.triangles.size());
-  for (const Triangle& t : m.triangles) {
-    const Index ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
-    out.triangles.push_back({t[0], ab, ca});
-    out.triangles.push_back({t[1], bc, ab});
-    out.triangles.push_back({t[2], ca, bc});
-    out.triangles.push_back({ab, bc, ca});
-  }
-  return out;
 }
 
 }  // namespace gsp::test

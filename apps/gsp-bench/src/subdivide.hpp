@@ -6,12 +6,9 @@
 // Loop subdivision quadruples the faces per step and moves every vertex (the result stays
 // curved everywhere, unlike midpoint splitting, whose new vertices lie on flat triangles).
 #include <gsp/mesh.hpp>
+#include <gsp/subdivide.hpp>   // midpoint splitting: gsp::midpoint_subdivide
 
 namespace gsp::bench {
-
-// `times` rounds of midpoint splitting: every face into four, new vertices at the edge
-// midpoints (one per undirected edge, shared by its faces), nothing moved. Any soup.
-TriangleMesh midpoint_subdivide(const TriangleMesh& mesh, int times);
 
 // `times` rounds of Loop subdivision. Throws InvalidInput when the mesh is not a manifold the
 // halfedge structure can hold (CGAL's subdivision needs one).
