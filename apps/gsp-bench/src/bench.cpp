@@ -1,6 +1,6 @@
 #include "bench.hpp"
 
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 
 #include <gsp/dijkstra.hpp>
 #include <gsp/errors.hpp>

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace gsp::train {
+namespace gsp::reference {
 class ExactCache;
 }
 
@@ -60,7 +60,7 @@ struct BenchConfig {
   bool cpu_clock = false;                // time by thread CPU time instead of wall time
   std::uint64_t seed = 1;
   unsigned neighbours = 10;              // k of the point-cloud methods' graph
-  const train::ExactCache* cache = nullptr;
+  const reference::ExactCache* cache = nullptr;
 };
 
 using StepFn = std::function<void()>;                     // one (method, source) done

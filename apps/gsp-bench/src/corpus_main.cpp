@@ -3,7 +3,7 @@
 #include "categories.hpp"
 #include "corpus_files.hpp"
 #include "corpus_report.hpp"
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 #include "output.hpp"
 
 #include <gsp/errors.hpp>
@@ -39,7 +39,7 @@ void run_corpus(cli::Context& ctx, const Options& o, const Settings& settings) {
   Categories categories(o.categories);
   const std::vector<std::string> files = corpus_files(o.meshes);
 
-  const train::ExactCache cache(o.cache);
+  const reference::ExactCache cache(o.cache);
   const BenchConfig config = bench_config(o, settings, cache);
 
   CorpusReport report;

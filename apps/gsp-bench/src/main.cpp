@@ -11,7 +11,7 @@
 // with a note; the others are still timed. See docs/apps/gsp-bench.md.
 #include "bench.hpp"
 #include "corpus_main.hpp"
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 #include "options.hpp"
 #include "output.hpp"
 #include "report.hpp"
@@ -75,7 +75,7 @@ void run(cli::Context& ctx, Options& o) {
   report.total_items = total_work_items(meshes);
   for (const BenchMesh& m : meshes) report.all_meshes.push_back(&m);
 
-  const train::ExactCache cache(o.cache);
+  const reference::ExactCache cache(o.cache);
   const BenchConfig config = bench_config(o, settings, cache);
 
   const auto progress = ctx.progress("benchmarking");

@@ -77,7 +77,7 @@ Settings check_options(Options& o, bool stats_to_stdout) {
   return s;
 }
 
-BenchConfig bench_config(const Options& o, const Settings& settings, const train::ExactCache& cache) {
+BenchConfig bench_config(const Options& o, const Settings& settings, const reference::ExactCache& cache) {
   BenchConfig config;
   config.methods = settings.methods;
   config.repetitions = o.repetitions;

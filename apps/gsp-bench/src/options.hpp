@@ -54,6 +54,6 @@ struct Settings {
 Settings check_options(Options& options, bool stats_to_stdout);
 
 // The measuring loop's settings from the checked options (both modes, per-mesh and corpus).
-BenchConfig bench_config(const Options& options, const Settings& settings, const train::ExactCache& cache);
+BenchConfig bench_config(const Options& options, const Settings& settings, const reference::ExactCache& cache);
 
 }  // namespace gsp::bench

@@ -1,6 +1,6 @@
 #include "workload.hpp"
 
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 #include "subdivide.hpp"
 
 #include <gsp/cli/app.hpp>
@@ -41,7 +41,7 @@ BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load,
     m.mesh = midpoint ? midpoint_subdivide(m.mesh, subdivide) : loop_subdivide(m.mesh, subdivide);
     m.name += (midpoint ? "@mid" : "@loop") + std::to_string(subdivide);
   }
-  m.hash = train::mesh_hash(m.mesh);
+  m.hash = reference::mesh_hash(m.mesh);
   m.sources = pick_sources(m.mesh, sources, seed, m.hash);
   return m;
 }

@@ -71,7 +71,7 @@ std::vector<std::string> split_list(const std::string& text) {
 }
 
 std::vector<TrainingMesh> prepare(gsp::cli::Context& ctx, const std::vector<std::string>& paths,
-                                  const Options& opt, const gsp::train::ExactCache& cache) {
+                                  const Options& opt, const gsp::reference::ExactCache& cache) {
   std::vector<TrainingMesh> out;
   for (const std::string& path : paths) {
     try {
@@ -121,7 +121,7 @@ void print_table(std::ostream& os, const std::vector<std::pair<std::string, cons
 }
 
 void run(gsp::cli::Context& ctx, const Options& opt) {
-  const gsp::train::ExactCache cache(opt.cache);
+  const gsp::reference::ExactCache cache(opt.cache);
   const auto t0 = std::chrono::steady_clock::now();
   const std::vector<TrainingMesh> train = prepare(ctx, opt.meshes, opt, cache);
   const std::vector<TrainingMesh> held_out = prepare(ctx, opt.validate, opt, cache);

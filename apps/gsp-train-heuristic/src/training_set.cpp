@@ -24,7 +24,7 @@ std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64
     if (used[v]) candidates.push_back(v);
   // mt19937_64's output is fixed by the standard (unlike the distributions), so the picks are
   // the same on every platform.
-  std::mt19937_64 rng(seed ^ mesh_hash(mesh));
+  std::mt19937_64 rng(seed ^ reference::mesh_hash(mesh));
   std::vector<Index> out;
   const std::size_t n = std::min<std::size_t>(std::size_t(std::max(count, 0)), candidates.size());
   for (std::size_t i = 0; i < n; ++i) {
@@ -38,14 +38,14 @@ std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64
 }  // namespace
 
 TrainingMesh prepare_mesh(const std::string& path, int num_sources, std::uint64_t seed,
-                          const ExactCache& cache, const NoteFn& note) {
+                          const reference::ExactCache& cache, const NoteFn& note) {
   cli::LoadOptions load;   // automatic: weld the formats that split vertices
   cli::LoadedMesh in = cli::load_mesh(path, load);
   TrainingMesh out;
   out.name = std::filesystem::path(path).filename().string();
   out.mesh = std::move(in.mesh);
   out.sources = pick_sources(out.mesh, num_sources, seed);
-  const std::uint64_t hash = mesh_hash(out.mesh);
+  const std::uint64_t hash = reference::mesh_hash(out.mesh);
   std::unique_ptr<reference::ExactGeodesicSolver> exact;   // built only on a cache miss
   for (Index s : out.sources) {
     if (auto d = cache.load(hash, s, out.mesh.num_vertices())) {

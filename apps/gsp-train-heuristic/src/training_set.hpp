@@ -1,7 +1,7 @@
 #pragma once
 // A training (or validation) mesh: the mesh GSP and CGAL both run on, random source vertices
 // and the exact distances from each of them.
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 
 #include <gsp/mesh.hpp>
 
@@ -27,6 +27,6 @@ using NoteFn = std::function<void(const std::string&)>;
 // unreadable file and gsp::TopologyError when CGAL cannot handle the mesh (non-manifold,
 // degenerate faces).
 TrainingMesh prepare_mesh(const std::string& path, int num_sources, std::uint64_t seed,
-                          const ExactCache& cache, const NoteFn& note);
+                          const reference::ExactCache& cache, const NoteFn& note);
 
 }  // namespace gsp::train

@@ -1,8 +1,9 @@
 #pragma once
 // Exact distances cached on disk. CGAL needs about a second per source on a 15k-vertex mesh
-// (ten or more on 35k), while a training run evaluates thousands of heuristics against the
-// same references: compute them once, keyed by the mesh's content and the source vertex, so
-// a renamed or re-welded file never reuses stale values.
+// (ten or more on 35k), while gsp-train-heuristic evaluates thousands of heuristics and
+// gsp-bench runs the corpus again and again against the same references: compute them once,
+// keyed by the mesh's content and the source vertex, so a renamed or re-welded file never
+// reuses stale values. One cache for both apps (the same folder serves either).
 #include <gsp/mesh.hpp>
 
 #include <cstdint>
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace gsp::train {
+namespace gsp::reference {
 
 // FNV-1a over the bytes of positions and triangles (the mesh the distances were computed on).
 std::uint64_t mesh_hash(const TriangleMesh& mesh);
@@ -30,4 +31,4 @@ class ExactCache {
   std::string dir_;
 };
 
-}  // namespace gsp::train
+}  // namespace gsp::reference

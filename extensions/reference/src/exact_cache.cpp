@@ -1,4 +1,4 @@
-#include "exact_cache.hpp"
+#include <gsp/reference/exact_cache.hpp>
 
 #include <gsp/errors.hpp>
 #include <gsp/io/atomic_file.hpp>
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-namespace gsp::train {
+namespace gsp::reference {
 
 namespace {
 
@@ -69,4 +69,4 @@ void ExactCache::store(std::uint64_t hash, Index source, const std::vector<doubl
   out.commit();
 }
 
-}  // namespace gsp::train
+}  // namespace gsp::reference
