@@ -6,6 +6,7 @@
 
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
+#include <gsp/mesh.hpp>
 #include <gsp/weld.hpp>
 
 #include <gtest/gtest.h>
@@ -25,7 +26,7 @@ std::vector<Index> vertex_components(const TriangleMesh& m) {
     return x;
   };
   for (const Triangle& t : m.triangles) {
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    if (repeats_vertex(t)) continue;
     parent[find(t[1])] = find(t[0]);
     parent[find(t[2])] = find(t[0]);
   }
@@ -37,7 +38,7 @@ std::vector<Index> vertex_components(const TriangleMesh& m) {
 std::vector<bool> in_some_face(const TriangleMesh& m) {
   std::vector<bool> used(m.num_vertices(), false);
   for (const Triangle& t : m.triangles)
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) used[t[0]] = used[t[1]] = used[t[2]] = true;
+    if (!repeats_vertex(t)) used[t[0]] = used[t[1]] = used[t[2]] = true;
   return used;
 }
 
