@@ -10,7 +10,7 @@
 // and the same propagation — as the consistently wound mesh (tests/pointcloud_soup_test.cpp).
 // Which of a patch's two windings: lengths cannot tell (the metric is mirror-symmetric), yet
 // GSP's float rounding and near-tie decisions are not, so the choice shows in the distances
-// (fertility mirrored: up to 0.9% apart). With positions, a closed patch is wound outwards
+// (docs/gsp-core.md, "Intrinsic Delaunay flips"). With positions, a closed patch is wound outwards
 // (positive signed volume, how benign meshes come); otherwise the winding most of its input
 // faces have; on a tie, the signed volume about the patch's centroid, then its first face's.
 #include <gsp/types.hpp>

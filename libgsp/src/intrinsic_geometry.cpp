@@ -150,7 +150,7 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
   for (std::size_t v = 0; v < nv; ++v) {
     // Barely saddle vertices go straight on like convex ones, unless a saddle is next to
     // them: in a cluster of negative curvature (a CAD part's concave fillet) the lines carried
-    // past them go on to pass the saddles at the wrong side (the boiler section: 23% short).
+    // past them go on to pass the saddles at the wrong side (docs/gsp-core.md, rule 6).
     if (kind[v] == kPlainVertex && used[v] && !boundary[v] && angle[v] <= 2 * kPi * (1 + kStraightExcess) &&
         !(next_to[v] & kSaddleNext))
       kind[v] = kConvexVertex;
@@ -159,7 +159,7 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     // Flat only inside a flat region: a flat vertex with a curved neighbour (angle sum off
     // 2 pi, or a reflex boundary corner) stays plain, so no line is carried past it (rule 4
     // of docs/gsp-core.md: on midpoint-split meshes every new vertex is flat next to curved
-    // old ones, and lines carried past them came out 1% short on average). Vertices joining
+    // old ones, and lines carried past them came out short). Vertices joining
     // several fans have no angle sum to judge by and do not count (the local triangles of
     // point clouds overlap at many of them, on planes too).
     if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) kind[v] = kPlainVertex;

@@ -264,19 +264,14 @@ class UpdateStep {
       (void)sigma;
       return dT + dT * kRelativeImprovement < t.dT;
     } else {
-      // Parallel runs: paths within rounding of each other reach a face in any order. One
-      // thread meets them in wavefront order and keeps the first, the straight path; on
-      // several threads a bend past a vertex almost on the straight line, come first, kept the
-      // face and bent everything behind it (a jittered plane: 70-90 faces bent, vertices 3e-4
-      // too far). So here a path takes a face when it is shorter on a coarse scale (the
-      // value's float bits less the last kTieBits: 256 ulps, 3e-5 in single precision; 64
-      // still let a tie that straddles a step go either way, 8e-5 too far on a plane once in
-      // 1200 queries), and on the same step of that scale when less lies behind its virtual
-      // source (fewer bends).
-      // One strict order on (coarse value, sigma): every accepted update lowers it, so the run
-      // ends (a tolerance on both sides, tried first, let two paths take a face from each
-      // other in turn). One thread keeps its rule: the sigma rule there moved the corpus's
-      // benign MRE both ways (p95 0.298% -> 0.317%).
+      // Parallel runs: paths within rounding of each other reach a face in any order, and on
+      // several threads a bend past a vertex almost on the straight line could come first and
+      // bend everything behind it. So here a path takes a face when it is shorter on a coarse
+      // scale (the value's float bits less the last kTieBits), and on the same step of that
+      // scale when less lies behind its virtual source (fewer bends). One strict order on
+      // (coarse value, sigma): every accepted update lowers it, so the run ends. One thread
+      // keeps its first-come rule. Why these choices, with the measurements:
+      // docs/performance.md, "Threads", ties.
       const auto coarse_new = coarse(dT), coarse_old = coarse(t.dT);
       return coarse_new < coarse_old || (coarse_new == coarse_old && sigma < t.sigma);
     }

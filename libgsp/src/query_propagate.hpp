@@ -121,10 +121,10 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
 // values are still relaxed (so never above an edge path), only not propagated from.
 inline constexpr int kMaxRelaxationRounds = 32;
 // A vertex lowered by less than this (relative) keeps its lower value but seeds nothing. An edge
-// along the front lowers many vertices by GSP's own error (0.01-0.1%: d(u) + |uv| beats d(v) by
-// a hair where uv runs with the geodesic); seeding all of them cost 30-80% of a query for
-// 0.01-0.03 pp of MRE. Lowered by more than 1%, the face sources round the vertex failed it
-// (CAD parts, poles, soups): there a new round pays (docs/gsp-core.md, measurements).
+// along the front lowers many vertices by GSP's own error (d(u) + |uv| beats d(v) by a hair
+// where uv runs with the geodesic), and seeding all of them costs far more than it gains.
+// Lowered by more than this, the face sources round the vertex failed it (CAD parts, poles,
+// soups): there a new round pays (docs/gsp-core.md, "Vertices as pseudo-sources").
 inline constexpr double kPseudoSourceGain = 1e-2;
 
 template <class Real, class Value>

@@ -7,9 +7,8 @@
 // - Arrays of 8 MB or more are aligned to 2 MB and advised as transparent huge pages
 //   (madvise; Linux's default THP mode "madvise" uses huge pages only where asked). The
 //   propagation reads the records in wavefront order, all over the array: with 4 KB pages
-//   most reads also miss the TLB. Measured at 8.9M vertices (17.8M faces, 570 MB of records,
-//   docs/scale.md): building the first query's state 1.40 s -> 0.53 s, the propagation
-//   2.01 s -> 1.62 s. Where huge pages are off or unavailable the advice is ignored.
+//   most reads also miss the TLB (the gain at 8.9M vertices: docs/scale.md, "Measured").
+//   Where huge pages are off or unavailable the advice is ignored.
 #include <cstddef>
 #include <cstdlib>
 #include <memory>

@@ -70,8 +70,8 @@ std::vector<Index> relax_along_edges(const std::vector<Triangle>& triangles, con
     for (Index v : *from) expand(v);
   } else {
     // Whether edge i of face f lowers one of its ends. Almost never true: one predictable test
-    // per edge (which end is nearer is a coin toss the branch predictor loses; this form took
-    // the relaxation from 20-30% to 14-16% of a query on 36k-100k-vertex scans).
+    // per edge (which end is nearer is a coin toss the branch predictor loses;
+    // docs/performance.md, "Single-thread propagation", item 8).
     auto shortens = [&](std::size_t f, Index i) {
       const Triangle& t = triangles[f];
       const Real len = Real(length[3 * f + i] * scale);

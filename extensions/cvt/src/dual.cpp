@@ -65,8 +65,8 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     sp.flip_max_normal_angle = options.flip_edges ? options.flip_max_normal_angle : -1.0;
     sp.pull_distance = options.pull_distance * cvt.diagonal;
     // The working mesh is the input's surface; projecting onto the input itself (rebuilt from
-    // the working faces' parents, 16-64 times fewer faces) saved about 1 s at 10,000 vertices
-    // but ended in lower minimum angles (fertility 32.8 against 34.6 degrees).
+    // the working faces' parents, far fewer faces) is faster but ends in lower minimum angles
+    // (docs/cvt.md, the post-pass's cost).
     const TriangleMesh& surface = cvt.working.mesh;
     const detail::BoundaryCurves curves(surface);
     r.stats.boundary_snaps = detail::snap_boundary_vertices(r.mesh, curves, 25.0);

@@ -197,8 +197,8 @@ void Walk::keep_shortest(std::vector<PathPoint>& taut, const PathPoint& first, c
       polyline_length(other) < polyline_length(out_.points))
     out_.points.swap(other);
   // The walk itself where both came out longer: a sleeve through needle faces (aspect ratio
-  // in the thousands) can unfold on the wrong side of an edge; measured once in 96 pairs on
-  // falcon (taut 0.55% over exact, the walk 0.27%).
+  // in the thousands) can unfold on the wrong side of an edge (docs/pathfinding.md, "How a
+  // path is made", step 4).
   if (polyline_length(walk) < polyline_length(out_.points)) out_.points.swap(walk);
 }
 

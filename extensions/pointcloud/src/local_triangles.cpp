@@ -43,7 +43,7 @@ LocalTriangles local_triangles(const std::vector<Vec3>& points, const TangentFra
       const Index j = neighbours[k];
       const Vec3 d = points[j] - points[i];
       // A link that leaves either tangent plane steeply joins two sheets across a gap (the
-      // graph propagation's steep links): not in the one-ring (fertility 0.64 -> 0.29%). The
+      // graph propagation's steep links): not in the one-ring. The
       // graph's gap rule (steep at both ends at a lower slope) is not applied: it also cuts
       // links across sharp creases, and the holes it leaves cost more than it saves
       // (docs/pointcloud.md, "Local triangles").

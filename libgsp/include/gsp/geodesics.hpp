@@ -42,8 +42,7 @@ enum class Strategy : std::uint8_t {
   speed_limiter,
   // The speed limiter that also postpones: an entry deferred to the next round and still
   // beyond that round's limit is deferred again, not expanded. Linear where the speed limiter
-  // is not (midpoint-subdivided scans: 2.08 instead of 4.61 steps per face at 1.6M vertices,
-  // 3x faster); docs/gsp-core.md, "Strategies".
+  // is not (midpoint-subdivided scans); docs/gsp-core.md, "Strategies".
   speed_limiter_postpone,
   static_postpone,   // skip (postpone) entries with d_T > f * i
   dynamic_postpone,  // skip entries with d_T > min_prev + f
