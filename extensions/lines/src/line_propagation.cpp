@@ -10,6 +10,7 @@
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
+#include <gsp/surface_point.hpp>
 
 #include "segment_2d.hpp"
 #include "segment_bound.hpp"
@@ -129,8 +130,8 @@ class Propagation {
     for (std::size_t i = 0; i < src.pieces.size(); ++i) {
       const SegmentPiece& p = src.pieces[i];
       const std::string name = "line source piece " + std::to_string(i);
-      if (p.face >= mesh_.num_faces())
-        throw InvalidInput(name + ": face " + std::to_string(p.face) + " does not exist");
+      const SurfacePoint start = SurfacePoint::in_face(p.face, p.start);
+      if (!start.exists_in(mesh_)) throw InvalidInput(name + ": " + start.missing_from(mesh_));
       if (!(p.before >= 0 && p.after >= 0))
         throw InvalidInput(name + ": before and after must be >= 0");
       if (p.segment >= src.num_segments())
@@ -179,10 +180,15 @@ class Propagation {
   }
 
  private:
-  static void check_weights(const std::array<double, 3>& w, const std::string& name) {
-    const double sum = w[0] + w[1] + w[2];
-    if (!(w[0] >= -1e-9 && w[1] >= -1e-9 && w[2] >= -1e-9) || !(std::abs(sum - 1) <= 1e-6))
-      throw InvalidInput(name + ": barycentric weights must be >= 0 and sum to 1");
+  // The core's test (gsp::are_barycentric) after weights within kWeightRounding below 0 are
+  // taken as 0: unlike a caller's source, a piece is usually made by polyline_source, whose
+  // weights come from closest_surface_point (1 - v - w inside a face) and from splitting at
+  // edges, and carry rounding just below 0 there.
+  static void check_weights(std::array<double, 3> w, const std::string& name) {
+    constexpr double kWeightRounding = 1e-9;
+    for (double& x : w)
+      if (x < 0 && x >= -kWeightRounding) x = 0;
+    if (!are_barycentric(w)) throw InvalidInput(name + ": barycentric weights must be >= 0 and sum to 1");
   }
 
   // Keeps `w` in face f if it is clearly shorter than every wave there at one sample at least;
