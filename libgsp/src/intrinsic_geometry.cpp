@@ -1,5 +1,7 @@
 #include "intrinsic_geometry.hpp"
 
+#include <gsp/intrinsic/edge_lengths.hpp>
+
 #include <gsp/errors.hpp>
 
 #include <algorithm>
@@ -23,26 +25,6 @@ double corner_angle(double a, double b, double c) {
 }
 
 }  // namespace
-
-double mean_edge_length(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
-  double sum = 0;   // in double: millions of float lengths would lose digits
-  std::size_t n = 0;
-  for (std::size_t f = 0; f < skipped_face.size(); ++f) {
-    if (skipped_face[f]) continue;
-    for (int i = 0; i < 3; ++i) sum += length[3 * f + i];
-    n += 3;
-  }
-  return (n > 0 && sum > 0) ? sum / double(n) : 1.0;
-}
-
-void snap_zero_lengths(std::vector<double>& length) {
-  for (std::size_t f = 0; 3 * f < length.size(); ++f) {
-    double* l = &length[3 * f];
-    const double longest = std::max({l[0], l[1], l[2]});
-    for (int i = 0; i < 3; ++i)
-      if (l[i] <= kZeroEdge * longest) l[i] = 0;
-  }
-}
 
 bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
   for (std::size_t f = 0; f < skipped_face.size(); ++f) {
@@ -80,14 +62,6 @@ void validate_halfedge_lengths(const TriangleMesh& mesh, const std::vector<doubl
   }
 }
 
-std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
-  std::vector<double> length(3 * mesh.num_faces());
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-    for (int i = 0; i < 3; ++i)
-      length[3 * f + i] = distance(mesh.positions[mesh.triangles[f][i]], mesh.positions[mesh.triangles[f][(i + 1) % 3]]);
-  return length;
-}
-
 void canonical_corners(const std::vector<double>& length, Index f, double scale, double out[3][2]) {
   const double len[3] = {scale * length[3 * f], scale * length[3 * f + 1], scale * length[3 * f + 2]};
   out[0][0] = out[0][1] = 0;
@@ -98,6 +72,40 @@ void canonical_corners(const std::vector<double>& length, Index f, double scale,
 }  // namespace gsp::detail
 
 namespace gsp::intrinsic {
+
+std::vector<bool> skipped_faces(const TriangleMesh& mesh) {
+  std::vector<bool> skipped(mesh.num_faces());
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) skipped[f] = repeats_vertex(mesh.triangles[f]);
+  return skipped;
+}
+
+std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
+  std::vector<double> length(3 * mesh.num_faces());
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    for (int i = 0; i < 3; ++i)
+      length[3 * f + i] = distance(mesh.positions[mesh.triangles[f][i]], mesh.positions[mesh.triangles[f][(i + 1) % 3]]);
+  return length;
+}
+
+void snap_zero_lengths(std::vector<double>& length) {
+  for (std::size_t f = 0; 3 * f < length.size(); ++f) {
+    double* l = &length[3 * f];
+    const double longest = std::max({l[0], l[1], l[2]});
+    for (int i = 0; i < 3; ++i)
+      if (l[i] <= kZeroEdge * longest) l[i] = 0;
+  }
+}
+
+double mean_edge_length(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
+  double sum = 0;   // in double: millions of float lengths would lose digits
+  std::size_t n = 0;
+  for (std::size_t f = 0; f < skipped_face.size(); ++f) {
+    if (skipped_face[f]) continue;
+    for (int i = 0; i < 3; ++i) sum += length[3 * f + i];
+    n += 3;
+  }
+  return (n > 0 && sum > 0) ? sum / double(n) : 1.0;
+}
 
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
@@ -165,6 +173,36 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
     if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) kind[v] = kPlainVertex;
   }
   return kind;
+}
+
+std::vector<std::uint8_t> boundary_halfedges(const Connectivity& conn, const std::vector<bool>& skipped_face,
+                                             const std::vector<double>& length) {
+  std::vector<std::uint8_t> boundary(conn.num_halfedges());
+  for (Index h = 0; h < Index(boundary.size()); ++h) boundary[h] = next_crossed(conn, skipped_face, length, h) == h;
+  return boundary;
+}
+
+std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                        const std::vector<Index>& bridge_vertices,
+                                        const std::vector<Index>& coincident_vertices) {
+  std::vector<Index> joins = bridge_vertices;
+  joins.insert(joins.end(), coincident_vertices.begin(), coincident_vertices.end());
+  for (Index e = 0; e < conn.num_edges(); ++e)
+    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
+      joins.push_back(from_vertex(mesh, conn.edge_halfedge[e]));
+      joins.push_back(to_vertex(mesh, conn.edge_halfedge[e]));
+    }
+  return joins;
+}
+
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectivity& conn,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& bridge_vertices,
+                                       const std::vector<Index>& coincident_vertices,
+                                       const std::vector<double>& length, bool angles_from_length) {
+  return vertex_kinds(mesh, boundary_halfedges(conn, skipped_face, length), skipped_face,
+                      nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices),
+                      angles_from_length ? &length : nullptr);
 }
 
 }  // namespace gsp::intrinsic

@@ -12,6 +12,8 @@
 #include <gsp/errors.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/intrinsic/bridge_vertices.hpp>
+#include <gsp/intrinsic/coincident_vertices.hpp>
+#include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/topology.hpp>
 
@@ -23,11 +25,7 @@
 namespace gsp {
 
 void GeodesicSolver::Impl::build_lengths(const std::vector<double>& edge_lengths) {
-  skipped_face.assign(mesh().num_faces(), false);
-  for (std::size_t f = 0; f < mesh().num_faces(); ++f) {
-    const Triangle& t = mesh().triangles[f];
-    skipped_face[f] = repeats_vertex(t);
-  }
+  skipped_face = intrinsic::skipped_faces(mesh());
   input.mesh_triangles = &mesh().triangles;
   if (edge_lengths.empty()) {
     input.length = detail::halfedge_lengths(mesh());
@@ -49,15 +47,7 @@ void GeodesicSolver::Impl::build_links(const Connectivity& conn) {
   // others link to the next member of their radial ring that is not in a skipped face
   // (itself on a boundary). One pass in halfedge order, no per-edge lists.
   std::vector<Index> plain(nh);
-  for (Index h = 0; h < nh; ++h) {
-    const Index e = conn.halfedge_edge[h];
-    Index next = h;
-    if (e != kInvalidIndex && !skipped_face[face_of(h)] && !detail::zero_length_edge(input.length, conn.edge_halfedge[e])) {
-      next = conn.radial_next[h];
-      while (next != h && skipped_face[face_of(next)]) next = conn.radial_next[next];
-    }
-    plain[h] = next;
-  }
+  for (Index h = 0; h < nh; ++h) plain[h] = intrinsic::next_crossed(conn, skipped_face, input.length, h);
   input.set_direction_bits(std::move(plain));
 }
 
@@ -96,51 +86,20 @@ void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   }
 }
 
-void GeodesicSolver::Impl::find_coincident_vertices(const Connectivity& conn) {
-  // Union the ends of every zero-length edge of a face that takes part.
-  std::vector<Index> parent;   // over the vertices met, by a map to local ids
-  std::vector<Index> local(mesh().num_vertices(), kInvalidIndex), vertex;
-  auto id = [&](Index v) {
-    if (local[v] == kInvalidIndex) local[v] = Index(vertex.size()), vertex.push_back(v), parent.push_back(local[v]);
-    return local[v];
-  };
-  auto find = [&](Index x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  for (Index e = 0; e < conn.num_edges(); ++e) {
-    const Index h = conn.edge_halfedge[e];
-    if (skipped_face[face_of(h)] || !detail::zero_length_edge(input.length, h)) continue;
-    const Index a = id(from_vertex(mesh(), h)), b = id(to_vertex(mesh(), h));
-    const Index ra = find(a), rb = find(b);
-    if (ra != rb) parent[ra] = rb;
-  }
-  if (vertex.empty()) return;
-  std::vector<std::vector<Index>> groups(vertex.size());
-  for (Index i = 0; i < Index(vertex.size()); ++i) groups[find(i)].push_back(vertex[i]);
-  for (const auto& g : groups) {
-    if (g.size() < 2) continue;
-    coincident.insert(coincident.end(), g.begin(), g.end());
-    coincident_begin.push_back(Index(coincident.size()));
-  }
-}
-
 void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn) {
   bridge_vertices = intrinsic::bridge_vertices(mesh(), conn, skipped_face);
-  find_coincident_vertices(conn);
-  // Plus the ends of edges with > 2 faces and the coincident vertices: no single angle sum.
-  std::vector<Index> nonmanifold = bridge_vertices;
-  nonmanifold.insert(nonmanifold.end(), coincident.begin(), coincident.end());
-  for (Index e = 0; e < conn.num_edges(); ++e)
-    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
-      nonmanifold.push_back(from_vertex(mesh(), conn.edge_halfedge[e]));
-      nonmanifold.push_back(to_vertex(mesh(), conn.edge_halfedge[e]));
-    }
-  // The connectivity's vertex corners are the input triangulation's; the rest goes before the
-  // Delaunay triangulation is complete (the run's peak of memory).
+  intrinsic::CoincidentVertices groups = intrinsic::coincident_vertices(mesh(), conn, skipped_face, input.length);
+  coincident = std::move(groups.vertices);
+  coincident_begin = std::move(groups.begin);
+  // intrinsic::vertex_kinds(mesh, conn, ...) in its steps: the vertices joining several fans
+  // from the connectivity first, so that the connectivity goes before the angle sums (the
+  // Delaunay flips beside them are the preparation's peak of memory).
+  const std::vector<Index> nonmanifold = intrinsic::nonmanifold_vertices(mesh(), conn, bridge_vertices, coincident);
+  // The connectivity's vertex corners are the input triangulation's; the rest goes now.
   input.corner_begin = std::move(conn.vertex_corner_begin);
   input.corners = std::move(conn.vertex_corners);
   conn = Connectivity();
+  // intrinsic::boundary_halfedges, read off the radial links (build_links: next_crossed).
   std::vector<std::uint8_t> boundary_halfedge(input.ring.size());
   for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
     boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;

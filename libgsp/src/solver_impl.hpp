@@ -196,7 +196,6 @@ struct GeodesicSolver::Impl {
   // then the radial links from the connectivity.
   void build_lengths(const std::vector<double>& edge_lengths);
   void build_links(const Connectivity& conn);
-  void find_coincident_vertices(const Connectivity& conn);
   // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
   // triangulation and releases the rest of `conn`.
   void analyse_vertices(Connectivity& conn);

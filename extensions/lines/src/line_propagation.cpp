@@ -6,7 +6,9 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/intrinsic/bridge_vertices.hpp>
+#include <gsp/intrinsic/coincident_vertices.hpp>
 #include <gsp/intrinsic/corner_rules.hpp>
+#include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
@@ -79,48 +81,31 @@ struct Entry {
   bool operator>(const Entry& o) const { return key > o.key; }
 };
 
-// The core's vertex kinds (gsp/intrinsic/vertex_kinds.hpp: flat, saddle, convex) for the
-// corner rules (gsp/intrinsic/corner_rules.hpp); vertices on a non-manifold edge are plain.
-std::vector<std::uint8_t> corner_kinds(const TriangleMesh& mesh, const Connectivity& conn,
-                                       const std::vector<bool>& skipped) {
-  std::vector<std::uint8_t> boundary_halfedge(3 * mesh.num_faces(), 0);
-  std::vector<Index> nonmanifold;
-  for (Index h = 0; h < Index(3 * mesh.num_faces()); ++h) {
-    if (skipped[face_of(h)]) continue;
-    const std::size_t ring = conn.ring_size(h);
-    boundary_halfedge[h] = ring == 1;
-    if (ring > 2) {
-      nonmanifold.push_back(mesh.triangles[face_of(h)][h % 3]);
-      nonmanifold.push_back(mesh.triangles[face_of(h)][(h + 1) % 3]);
-    }
-  }
-  return intrinsic::vertex_kinds(mesh, boundary_halfedge, skipped, nonmanifold);
-}
-
 class Propagation {
  public:
   Propagation(const TriangleMesh& mesh, const LineOptions& options)
       : mesh_(mesh), options_(options), conn_(build_connectivity(mesh)) {
     const std::size_t nf = mesh.num_faces();
     frames_.resize(nf);
-    skipped_.assign(nf, 0);
     faces_.resize(nf);
-    double total = 0;
-    std::size_t edges = 0;
-    for (Index f = 0; f < Index(nf); ++f) {
-      skipped_[f] = repeats_vertex(mesh.triangles[f]);
-      if (skipped_[f]) continue;
-      frames_[f] = intrinsic::face_frame(mesh, f);
-      for (double l : frames_[f].len) total += l, ++edges;
-    }
-    scale_ = edges ? total / double(edges) : 1.0;
-    // The shared layer takes the skipped faces as bits (one conversion for both calls).
-    const std::vector<bool> skipped_face(skipped_.begin(), skipped_.end());
-    kinds_ = corner_kinds(mesh, conn_, skipped_face);
+    const std::vector<bool> skipped_face = intrinsic::skipped_faces(mesh);
+    skipped_.assign(skipped_face.begin(), skipped_face.end());   // bytes: read per candidate
+    for (Index f = 0; f < Index(nf); ++f)
+      if (!skipped_[f]) frames_[f] = intrinsic::face_frame(mesh, f);
+    // The core's lengths and unit: tolerances in mean edges mean the same here as there.
+    std::vector<double> length = intrinsic::halfedge_lengths(mesh);
+    intrinsic::snap_zero_lengths(length);
+    scale_ = intrinsic::mean_edge_length(length, skipped_face);
+    // The core's vertex kinds (flat, saddle, convex) for the corner rules
+    // (gsp/intrinsic/corner_rules.hpp): bridge and coincident vertices and the ends of
+    // non-manifold edges are plain.
+    const std::vector<Index> bridges = intrinsic::bridge_vertices(mesh, conn_, skipped_face);
+    const intrinsic::CoincidentVertices coincident =
+        intrinsic::coincident_vertices(mesh, conn_, skipped_face, length);
+    kinds_ = intrinsic::vertex_kinds(mesh, conn_, skipped_face, bridges, coincident.vertices, length);
     bridge_.assign(mesh.num_vertices(), 0);
     // Bridges (gsp/intrinsic/bridge_vertices.hpp) pass their distance on as a point source.
-    for (Index v : intrinsic::bridge_vertices(mesh, conn_, skipped_face))
-      bridge_[v] = 1;
+    for (Index v : bridges) bridge_[v] = 1;
     distance_.assign(mesh.num_vertices(), std::numeric_limits<double>::infinity());
     segment_.assign(mesh.num_vertices(), kInvalidIndex);
   }

@@ -1,24 +1,19 @@
 #include <gsp/pathfinding/path_tracer.hpp>
 
+#include <gsp/intrinsic/edge_lengths.hpp>
+
 #include "descent_faces.hpp"
 #include "walk.hpp"
 
 namespace gsp::pathfinding {
 
-namespace {
-
-double mean_edge_length(const TriangleMesh& mesh) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (const Triangle& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i) sum += distance(mesh.positions[t[i]], mesh.positions[t[(i + 1) % 3]]), ++n;
-  return n && sum > 0 ? sum / double(n) : 1.0;
-}
-
-}  // namespace
-
+// The walk's tolerances are in the core's unit, the mean edge length over the faces that
+// take part (faces repeating a vertex are left out, as in the field being traced).
 PathTracer::PathTracer(const TriangleMesh& mesh, const TraceOptions& options)
-    : mesh_(mesh), conn_(build_connectivity(mesh)), options_(options), mean_edge_(mean_edge_length(mesh)) {}
+    : mesh_(mesh),
+      conn_(build_connectivity(mesh)),
+      options_(options),
+      mean_edge_(intrinsic::mean_edge_length(intrinsic::halfedge_lengths(mesh), intrinsic::skipped_faces(mesh))) {}
 
 GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end) const {
   if (field.face_sources.size() != mesh_.num_faces())

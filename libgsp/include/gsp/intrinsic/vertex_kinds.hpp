@@ -1,6 +1,7 @@
 #pragma once
 // What kind of vertex a shortest path meets (internal layer shared by the core's propagation
 // and the extensions; not a stable API).
+#include <gsp/connectivity.hpp>
 #include <gsp/mesh.hpp>
 #include <gsp/types.hpp>
 
@@ -45,6 +46,28 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
                                        const std::vector<bool>& skipped_face,
                                        const std::vector<Index>& nonmanifold_vertices,
                                        const std::vector<double>* length = nullptr);
+
+// What vertex_kinds above needs from the connectivity, as the core's propagation sees the
+// mesh. boundary_halfedges: per halfedge, whether the propagation crosses from it to no other
+// face (next_crossed(h) == h, gsp/intrinsic/edge_lengths.hpp: alone on its edge among the
+// faces that take part, in a skipped face, or on a zero-length edge); `length` per halfedge,
+// after snap_zero_lengths. nonmanifold_vertices: the bridge vertices, the coincident vertices
+// and the ends of edges with more than two faces.
+std::vector<std::uint8_t> boundary_halfedges(const Connectivity& conn, const std::vector<bool>& skipped_face,
+                                             const std::vector<double>& length);
+std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                        const std::vector<Index>& bridge_vertices,
+                                        const std::vector<Index>& coincident_vertices);
+
+// The core's vertex kinds in one call: the two above, then vertex_kinds. The corner angles come
+// from the 3D positions, or from `length` with angles_from_length (caller-supplied intrinsic
+// lengths). The core reads the boundary off its radial links instead (the same next_crossed),
+// which it has made anyway.
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectivity& conn,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& bridge_vertices,
+                                       const std::vector<Index>& coincident_vertices,
+                                       const std::vector<double>& length, bool angles_from_length = false);
 
 // Tight on purpose: finely tessellated smooth surfaces stored in float (STL tyres) have many
 // vertices within 1e-5 of flat that geodesics must still bend around (docs/gsp-core.md).

@@ -1,0 +1,38 @@
+#include <gsp/intrinsic/coincident_vertices.hpp>
+#include <gsp/intrinsic/edge_lengths.hpp>
+
+namespace gsp::intrinsic {
+
+CoincidentVertices coincident_vertices(const TriangleMesh& mesh, const Connectivity& conn,
+                                       const std::vector<bool>& skipped_face, const std::vector<double>& length) {
+  // Union the ends of every zero-length edge of a face that takes part.
+  std::vector<Index> parent;   // over the vertices met, by a map to local ids
+  std::vector<Index> local(mesh.num_vertices(), kInvalidIndex), vertex;
+  auto id = [&](Index v) {
+    if (local[v] == kInvalidIndex) local[v] = Index(vertex.size()), vertex.push_back(v), parent.push_back(local[v]);
+    return local[v];
+  };
+  auto find = [&](Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (Index e = 0; e < conn.num_edges(); ++e) {
+    const Index h = conn.edge_halfedge[e];
+    if (skipped_face[face_of(h)] || !zero_length_edge(length, h)) continue;
+    const Index a = id(from_vertex(mesh, h)), b = id(to_vertex(mesh, h));
+    const Index ra = find(a), rb = find(b);
+    if (ra != rb) parent[ra] = rb;
+  }
+  CoincidentVertices out;
+  if (vertex.empty()) return out;
+  std::vector<std::vector<Index>> groups(vertex.size());
+  for (Index i = 0; i < Index(vertex.size()); ++i) groups[find(i)].push_back(vertex[i]);
+  for (const auto& g : groups) {
+    if (g.size() < 2) continue;
+    out.vertices.insert(out.vertices.end(), g.begin(), g.end());
+    out.begin.push_back(Index(out.vertices.size()));
+  }
+  return out;
+}
+
+}  // namespace gsp::intrinsic
