@@ -8,6 +8,7 @@
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
 #include "validate_options.hpp"
+#include "validate_sources.hpp"
 
 #include <gsp/errors.hpp>
 #include <gsp/geodesics.hpp>
@@ -47,6 +48,7 @@ std::size_t GeodesicSolver::state_bytes(Precision precision) const {
 GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
                                        const GeodesicOptions& options) const {
   detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh().num_vertices());
+  detail::validate_sources(sources, impl_->mesh());
   // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
   // per-face virtual sources need the input faces.
   bool vertex_sources_only = true;

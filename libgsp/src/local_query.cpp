@@ -2,11 +2,13 @@
 // persists in a workspace and is put back only where the query touched it. The faces touched
 // are the seeded ones and those the update step reached for the first time (it lists them),
 // so nothing scans the whole mesh.
+#include "query_gather.hpp"
 #include "query_propagate.hpp"
 #include "query_seed.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
 #include "validate_options.hpp"
+#include "validate_sources.hpp"
 #include "vertex_relaxation.hpp"
 #include "virtual_source.hpp"
 
@@ -51,6 +53,7 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
   if (!workspace.state_ || workspace.state_->owner != impl_.get())
     throw InvalidInput("compute_local: the workspace was made by another solver (use make_workspace())");
   detail::validate_options(options, detail::QueryKind::local, impl_->custom_lengths, impl_->mesh().num_vertices());
+  detail::validate_sources(sources, impl_->mesh());
   if (resolved_precision(options.precision, /*input_faces=*/true) == Precision::single)
     return impl_->run_local<float>(sources, options, workspace);
   return impl_->run_local<double>(sources, options, workspace);
@@ -136,60 +139,19 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   const float* lines = line_sources.empty() ? nullptr : line_sources.data();
   propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces, lines);
 
-  // The faces reached: those the propagation reached for the first time, and the seeded ones.
-  for (Index f : ws.faces) ws.face_mark[f] = 1;
-  for (Index f : ws.seeded)
-    if (!ws.face_mark[f]) ws.face_mark[f] = 1, ws.faces.push_back(f);
-  auto touch = [&](Index v, double d, Index label) {
-    if (ws.vdist[v] == std::numeric_limits<double>::infinity()) ws.vertices.push_back(v);
-    if (d < ws.vdist[v]) ws.vdist[v] = d, ws.vlabel[v] = label;
-  };
-  for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
-  for (Index f : ws.faces) {
-    const FaceRecord<Real>& st = buf.state[f];
-    const Triangle& t = tri.triangles()[f];
-    for (Index i = 0; i < 3; ++i) touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
-  }
-  if (options.vertex_relaxation)
-    relax_local<Real>(options, buf.state.data(), buf.queue,
-                      {ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded}, result.stats, lines);
+  const LocalValues values{ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded};
+  gather_reached<Real>(buf.state.data(), ws.vertex_seeds, values);
+  if (options.vertex_relaxation) relax_local<Real>(options, buf.state.data(), buf.queue, values, result.stats, lines);
   result.stats.faces_reached = ws.faces.size();
   if (options.straight_line_bound && !custom_lengths) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
         ws.vertices.size(), ws.vertices.data(), mesh().positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
         points);
     // A vertex source's own value is exact and wins, as in compute().
-    for (const VertexSeed& vs : ws.vertex_seeds) touch(vs.vertex, vs.value, vs.label);
+    for (const VertexSeed& vs : ws.vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
   }
 
-  const double cutoff = options.max_distance;
-  for (Index v : ws.vertices) {
-    if (!(ws.vdist[v] <= cutoff)) continue;
-    result.vertices.push_back(maps.vertex_to_input(v));
-    result.vertex_distance.push_back(ws.vdist[v]);
-    result.vertex_source.push_back(ws.vlabel[v]);
-  }
-  result.faces.reserve(ws.faces.size());
-  result.face_distance.reserve(ws.faces.size());
-  result.face_source.reserve(ws.faces.size());
-  if (options.want_face_sources) result.face_sources.reserve(ws.faces.size());
-  const double scaled_cutoff = cutoff / mean_edge;
-  for (Index f : ws.faces) {
-    const FaceRecord<Real>& st = buf.state[f];
-    // Faces that cannot hold a point within max_distance (reached by the last ring of the
-    // front) are left out of the result.
-    if (!(double(st.dT) - double(detail::centroid_radius(st.len)) <= scaled_cutoff)) continue;
-    result.faces.push_back(maps.face_to_input(f));
-    result.face_distance.push_back(double(st.dT) * mean_edge);
-    result.face_source.push_back(st.source());
-    if (options.want_face_sources) {
-      VirtualSource vs;
-      vs.position = detail::canonical_to_3d(mesh(), f, double(st.sx) * mean_edge, double(st.sy) * mean_edge);
-      vs.sigma = double(st.sigma) * mean_edge;
-      vs.source = st.source();
-      result.face_sources.push_back(vs);
-    }
-  }
+  gather_local<Real>(buf.state.data(), values, options, result);
   return result;
 }
 

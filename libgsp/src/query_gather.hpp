@@ -2,7 +2,8 @@
 // A full query's last step (after query_seed.hpp and query_propagate.hpp): the per-vertex
 // values from the faces' virtual sources, then the dense result in the input's order (vertex
 // distances and labels with the vertex sources on top, per-face values and virtual sources
-// when asked for). A bounded query gathers its sparse result in local_query.cpp.
+// when asked for). A bounded query's gather, sparse over what it reached, is here too
+// (gather_reached, gather_local).
 #include "solver_impl.hpp"
 #include "virtual_source.hpp"
 
@@ -79,15 +80,9 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
                                   const GeodesicOptions& options, const std::vector<Real>& vmin,
                                   std::vector<Index>& vlabel, GeodesicResult& result, unsigned threads) const {
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
-  // A vertex source's own value is exact and wins ties against the faces; of several sources
-  // at one vertex the smallest value, the first source on ties.
-  std::vector<VertexSeed> seeds = vertex_seeds;
-  std::stable_sort(seeds.begin(), seeds.end(), [](const VertexSeed& a, const VertexSeed& b) {
-    return a.vertex != b.vertex ? a.vertex < b.vertex : a.value < b.value;
-  });
-  seeds.erase(std::unique(seeds.begin(), seeds.end(),
-                          [](const VertexSeed& a, const VertexSeed& b) { return a.vertex == b.vertex; }),
-              seeds.end());
+  // A vertex source's own value is exact and wins ties against the faces (vertex_seeds: one
+  // per vertex, as seed() left them).
+  const std::vector<VertexSeed>& seeds = vertex_seeds;
   // Results in the input's order, gathered (sequential writes, reads in layout order), then the
   // few vertex sources on top.
   const double cutoff = options.max_distance;
@@ -154,6 +149,54 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
       vs.position = detail::canonical_to_3d(mesh(), Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
       vs.sigma = double(st.sigma) * mean_edge;
       vs.source = st.source();
+    }
+  }
+}
+
+template <class Real>
+void GeodesicSolver::Impl::gather_reached(const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
+                                          LocalValues values) const {
+  // The faces reached: those the propagation reached for the first time, and the seeded ones.
+  for (Index f : values.faces) values.face_mark[f] = 1;
+  for (Index f : values.seeded)
+    if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
+  for (const VertexSeed& vs : vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
+  for (Index f : values.faces) {
+    const FaceRecord<Real>& st = state[f];
+    const Triangle& t = input.triangles()[f];
+    for (Index i = 0; i < 3; ++i) values.touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
+  }
+}
+
+template <class Real>
+void GeodesicSolver::Impl::gather_local(const FaceRecord<Real>* state, const LocalValues& values,
+                                        const GeodesicOptions& options, LocalField& result) const {
+  const double cutoff = options.max_distance;
+  for (Index v : values.vertices) {
+    if (!(values.vdist[v] <= cutoff)) continue;
+    result.vertices.push_back(maps.vertex_to_input(v));
+    result.vertex_distance.push_back(values.vdist[v]);
+    result.vertex_source.push_back(values.vlabel[v]);
+  }
+  result.faces.reserve(values.faces.size());
+  result.face_distance.reserve(values.faces.size());
+  result.face_source.reserve(values.faces.size());
+  if (options.want_face_sources) result.face_sources.reserve(values.faces.size());
+  const double scaled_cutoff = cutoff / mean_edge;
+  for (Index f : values.faces) {
+    const FaceRecord<Real>& st = state[f];
+    // Faces that cannot hold a point within max_distance (reached by the last ring of the
+    // front) are left out of the result.
+    if (!(double(st.dT) - double(detail::centroid_radius(st.len)) <= scaled_cutoff)) continue;
+    result.faces.push_back(maps.face_to_input(f));
+    result.face_distance.push_back(double(st.dT) * mean_edge);
+    result.face_source.push_back(st.source());
+    if (options.want_face_sources) {
+      VirtualSource vs;
+      vs.position = detail::canonical_to_3d(mesh(), f, double(st.sx) * mean_edge, double(st.sy) * mean_edge);
+      vs.sigma = double(st.sigma) * mean_edge;
+      vs.source = st.source();
+      result.face_sources.push_back(vs);
     }
   }
 }

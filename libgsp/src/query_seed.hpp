@@ -1,14 +1,12 @@
 #pragma once
 // A query's first step, shared by full queries (geodesic_solver.cpp) and bounded ones
-// (local_query.cpp): the sources (input order, checked here) seeded into the faces of the
-// triangulation queried, and the vertex sources' exact values. Then query_propagate.hpp, then
-// the gather (query_gather.hpp for a full field, local_query.cpp for a bounded one).
+// (local_query.cpp): the sources (input order, checked at the API boundary:
+// validate_sources.hpp) seeded into the faces of the triangulation queried, and the vertex
+// sources' exact values. Then query_propagate.hpp, then the gather (query_gather.hpp).
 #include "solver_impl.hpp"
 
-#include <gsp/errors.hpp>
-
 #include <algorithm>
-#include <string>
+#include <cmath>
 
 namespace gsp {
 
@@ -18,7 +16,6 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
                                 detail::TargetSet<Real>* goal, std::vector<Index>* seeded) const {
   const std::vector<double>& length = tri.length;
   const double scale = 1.0 / mean_edge;
-  if (sources.size() >= detail::kNoSource) throw InvalidInput("too many sources (at most 2^26 - 1)");
   // A face-point source as seeded: its face in the layout's order, its weights normalised,
   // and its index in `sources`.
   struct SeededFacePoint {
@@ -30,13 +27,8 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
     const Index label = static_cast<Index>(s);
-    if (!std::isfinite(src.offset) || src.offset < 0)
-      throw InvalidInput("source " + std::to_string(s) + ": offset must be finite and >= 0");
-    if (!src.exists_in(mesh())) throw InvalidInput("source " + src.missing_from(mesh()));
     if (src.is_vertex()) {
       const Index v = maps.vertex_to_layout(src.element);
-      // Repeated vertices are resolved where the seeds are applied (the smallest offset, the
-      // first source on ties).
       vertex_seeds.push_back({v, src.offset, label});
       if (goal) goal->vertex_value(v, Real(src.offset * scale));
       for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
@@ -50,9 +42,6 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
       }
     } else {
       const auto& b = src.barycentric;
-      if (!are_barycentric(b))
-        throw InvalidInput("source " + std::to_string(s) +
-                           ": barycentric coordinates must be >= 0 and sum to 1");
       const double sum = b[0] + b[1] + b[2];
       const Index f = maps.face_to_layout(src.element);
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
@@ -92,6 +81,14 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
       }
     }
   }
+  // One seed per vertex, by vertex: of several sources at one vertex the smallest value, the
+  // first source on ties. Every later step applies this list as it is.
+  std::stable_sort(vertex_seeds.begin(), vertex_seeds.end(), [](const VertexSeed& a, const VertexSeed& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.value < b.value;
+  });
+  vertex_seeds.erase(std::unique(vertex_seeds.begin(), vertex_seeds.end(),
+                                 [](const VertexSeed& a, const VertexSeed& b) { return a.vertex == b.vertex; }),
+                     vertex_seeds.end());
 }
 
 }  // namespace gsp

@@ -218,8 +218,9 @@ struct GeodesicSolver::Impl {
               bool relax, const GeodesicOptions& options, const std::vector<Real>& vmin, std::vector<Index>& vlabel,
               GeodesicResult& result, unsigned threads = 1) const;
 
-  // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): validates the sources and seeds
-  // their faces; vertex sources also give their vertex's exact value (vertex_seeds). Faces
+  // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): seeds the
+  // faces of the sources (checked before: validate_sources.hpp); vertex sources also give
+  // their vertex's exact value (vertex_seeds, one per vertex in vertex order). Faces
   // seeded are appended to `seeded` when given. propagate(): the chosen strategy, then the
   // bridge vertices' rounds; faces reached for the first time are appended to `reached`
   // when given.
@@ -252,7 +253,21 @@ struct GeodesicSolver::Impl {
     std::vector<Index>& faces;          // faces reached (to report and reset)
     std::vector<std::uint8_t>& face_mark;
     std::vector<Index>& seeded;         // faces to reset
+    // Lowers vertex v to d (label) if that is lower, listing it the first time it gets a value.
+    void touch(Index v, double d, Index label) const {
+      if (vdist[v] == std::numeric_limits<double>::infinity()) vertices.push_back(v);
+      if (d < vdist[v]) vdist[v] = d, vlabel[v] = label;
+    }
   };
+  // A bounded query's gather (query_gather.hpp): gather_reached() lists the faces the
+  // propagation reached and gives their corners and the vertex sources their values;
+  // gather_local() writes the sparse result (what lies within max_distance) in input indices.
+  template <class Real>
+  void gather_reached(const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
+                      LocalValues values) const;
+  template <class Real>
+  void gather_local(const FaceRecord<Real>* state, const LocalValues& values, const GeodesicOptions& options,
+                    LocalField& result) const;
   template <class Real>
   void relax_local(const GeodesicOptions& options, FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
                    LocalValues values, PropagationStats& stats, const float* line_sources) const;
