@@ -2,7 +2,7 @@
 // Targeted runs (paper Section 5.8, Fig. 12a,b), internal: the propagation in a heap that stops
 // once no queued face can still shorten a target's distance, optionally in A* order. A separate
 // driver around the unchanged UpdateStep, so untargeted runs pay nothing for it.
-#include "propagation.hpp"
+#include "update_step.hpp"
 
 #include <gsp/connectivity.hpp>
 

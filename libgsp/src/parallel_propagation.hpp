@@ -12,7 +12,9 @@
 // A thread waiting for the others to finish a round spins on their progress (yielding) and
 // reads its mail meanwhile; a thread with no work sleeps on a condition variable. The run ends
 // when every thread is idle with an empty inbox. Internal header of libgsp.
-#include "propagation.hpp"
+#include "update_step.hpp"
+
+#include <gsp/intrinsic/speed_limiter.hpp>
 
 #include <atomic>
 #include <condition_variable>

@@ -6,7 +6,7 @@
 #include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
 #include "parallel_ranges.hpp"
-#include "propagation.hpp"
+#include "queue_strategies.hpp"
 #include "straight_line_bound.hpp"
 
 #include <gsp/connectivity.hpp>
@@ -40,7 +40,7 @@ struct Triangulation {
   const std::vector<Triangle>* mesh_triangles = nullptr;
   const std::vector<Triangle>& triangles() const { return mesh_triangles ? *mesh_triangles : own_triangles; }
   std::vector<double> length;             // per halfedge, model units
-  std::vector<Index> ring;                // radial links with direction bits (propagation.hpp)
+  std::vector<Index> ring;                // radial links with direction bits (ring_links.hpp)
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
   bool needs_double = false;              // a face too thin for float lengths (Precision::automatic)
   bool delaunay = false;                  // intrinsic Delaunay (flipped, or the input needed no flip)

@@ -46,7 +46,7 @@ inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const In
   return out;
 }
 
-// The same bound inside the propagation (propagation.hpp, StraightLineTest): the vertices and
+// The same bound inside the propagation (update_step.hpp, StraightLineTest): the vertices and
 // the sources in 3D, in mean edge lengths from the centre of the mesh's bounding box, in single
 // precision (4 floats per source: x, y, z, offset). Not for caller-supplied lengths.
 inline std::vector<float> scaled_positions(const std::vector<Vec3>& positions, double scale, Vec3 centre) {

@@ -38,7 +38,7 @@ struct Source : SurfacePoint {
 // label-correcting fix point; they differ in speed.
 enum class Strategy : std::uint8_t {
   // Default: enqueue in the current queue while d_T < f * i (lean queue); turns into
-  // speed_limiter_postpone where a run stops being linear (propagation.hpp, docs/gsp-core.md).
+  // speed_limiter_postpone where a run stops being linear (queue_strategies.hpp, docs/gsp-core.md).
   speed_limiter,
   // The speed limiter that also postpones: an entry deferred to the next round and still
   // beyond that round's limit is deferred again, not expanded. Linear where the speed limiter

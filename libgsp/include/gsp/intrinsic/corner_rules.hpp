@@ -35,7 +35,7 @@ inline constexpr double kSaddleLooseLambdaInputFaces = 0.3;
 // - saddle: a bend is right for the hidden part of the face and over-estimates the rest; the
 //   loose probe has the last word (the table probes needles almost at the opposite corner).
 template <class FlatMiss, class Crossing>
-int reconsider_bend(int kind, std::uint8_t end_kind, double saddle_loose, FlatMiss&& within_flat_miss,
+[[gnu::always_inline]] inline int reconsider_bend(int kind, std::uint8_t end_kind, double saddle_loose, FlatMiss&& within_flat_miss,
                     Crossing&& crossing) {
   switch (end_kind) {
     case kFlatVertex: return within_flat_miss() ? 0 : kind;
@@ -50,7 +50,7 @@ int reconsider_bend(int kind, std::uint8_t end_kind, double saddle_loose, FlatMi
 // lines through. Where AB has a saddle end, the strict probe decides: a bend at that end if
 // its line passes it, else straight (0).
 template <class Crossing>
-int straight_past_saddles(bool saddle_a, bool saddle_b, Crossing&& crossing) {
+[[gnu::always_inline]] inline int straight_past_saddles(bool saddle_a, bool saddle_b, Crossing&& crossing) {
   if (!saddle_a && !saddle_b) return 0;
   const int strict = crossing(kSaddleLambda);
   return strict != 0 && (strict == 1 ? saddle_a : saddle_b) ? strict : 0;

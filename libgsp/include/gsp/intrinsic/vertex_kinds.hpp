@@ -10,7 +10,7 @@
 
 namespace gsp::intrinsic {
 
-// Per vertex, what the visibility test does at it (propagation.hpp):
+// Per vertex, what the visibility test does at it (the core's update_step.hpp):
 // - kFlatVertex where no shortest path can bend — interior vertices whose angle sum is 2 pi
 //   and boundary vertices whose angle sum is at most pi (within a relative kFlatAngleTolerance). Unfolding
 //   around such a vertex is the same from either side, so a source that the visibility probe

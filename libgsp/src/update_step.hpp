@@ -1,6 +1,7 @@
 #pragma once
-// The GSP update step (paper Section 4.1, in canonical face coordinates: see face_record.hpp)
-// and the queue strategies that drive it (Section 4.2).
+// The GSP update step (paper Section 4.1, in canonical face coordinates: see face_record.hpp):
+// UpdateStep, which the queue strategies (queue_strategies.hpp, Section 4.2) drive, and the
+// straight-line test it asks (StraightLineTest).
 // Internal header: templated on the scalar type, instantiated for float and double in
 // geodesic_solver.cpp. The hot loop allocates nothing and calls nothing virtual.
 #include "face_record.hpp"
@@ -8,7 +9,6 @@
 
 #include <gsp/geodesics.hpp>
 #include <gsp/intrinsic/corner_rules.hpp>
-#include <gsp/intrinsic/speed_limiter.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <algorithm>
@@ -16,13 +16,10 @@
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <vector>
 
 namespace gsp::detail {
-
 
 // A lean-queue entry: the halfedge of the face to propagate from, and that face's d_T when
 // queued, so entries overtaken by a later update of the face are recognised and skipped.
@@ -135,113 +132,31 @@ class UpdateStep {
   }
 
   // One update step: the source (hx, hy in the sending halfedge's edge frame, e1h that edge's
-  // length, sigma, label) unfolded over ring link `link` into the face of halfedge g.
+  // length, sigma, label) unfolded over ring link `link` into the face of halfedge g. Its
+  // steps, each below: unfold, choose_path (the heuristic's probe and the corner rules), the
+  // path's values, the straight-line test, accept.
   template <class Push>
   void try_update(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source, Push&& push) {
     FaceRecord<Real>& t = faces_[face_of(g)];
     const Index cj = corner_of(g);
     const EdgeView<Real> v = edge_view(t.len, cj);
-    const Real e1 = v.e1;
-    // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
-    // two faces disagree in orientation and walk the edge the same way.
-    const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
-    const Real sx = same_dir ? hx : e1h - hx;
-    const Real sy = -hy;   // <= 0: the source lies on U's side, as it should
-    const Real cx = (v.px + e1) * Real(1.0 / 3.0);
-    const Real cy = v.py * Real(1.0 / 3.0);
-
-    // The bend at the end giving the shorter path source -> corner -> centroid (the paper's
-    // l1, l2).
-    auto shorter_bend = [&] {
-      const Real l1 = std::sqrt(cx * cx + cy * cy) + std::sqrt(sx * sx + sy * sy);
-      const Real l2 = std::sqrt((cx - e1) * (cx - e1) + cy * cy) + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-      return l1 <= l2 ? 1 : 2;
-    };
-    int kind;   // 0: straight through, 1: new virtual source at A, 2: at B
+    const Unfolded u = unfold(v, link, h_dir, hx, hy, e1h);
     int probed = 0;   // what the probe alone said
-    if (sy <= 0) {
-      // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
-      // (lambda 1); a zero-length edge is seen through its single point.
-      Real qx = -1, qy = 0;
-      if (e1 > 0) {
-        const Real lambda = probe_.blend(t.len, e1, v.py);
-        qx = v.px + lambda * (cx - v.px);
-        qy = v.py + lambda * (cy - v.py);
-      }
-      // Does the segment Q -> S cross AB? Division-free form of the paper's
-      // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
-      const Real tq = qx * -sy + sx * qy;
-      const Real span = qy - sy;   // >= 0
-      kind = tq < 0 ? 1 : (tq > e1 * span ? 2 : 0);
-      // Where the segment from the probe at lambda (between P and the centroid) to S crosses
-      // AB's line: 0 within AB, 1 before A, 2 beyond B (the same test as above). The corner
-      // rules (gsp/intrinsic/corner_rules.hpp) ask it where a corner's kind has the last word.
-      auto crossing = [&](Real lambda) {
-        const Real rx = v.px + lambda * (cx - v.px), ry = v.py + lambda * (cy - v.py);
-        const Real tr = rx * -sy + sx * ry;
-        return tr < 0 ? 1 : (tr > e1 * (ry - sy) ? 2 : 0);
-      };
-      probed = kind;
-      if (kind != 0) {
-        const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
-        auto within_flat_miss = [&] { return (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span; };
-        kind = intrinsic::reconsider_bend(kind, t.corner_kind(end), probe_.saddle_loose, within_flat_miss, crossing);
-      }
-      if (kind == 0 && e1 > 0)
-        kind = intrinsic::straight_past_saddles(t.saddle_corner(cj), t.saddle_corner(cj == 2 ? 0 : cj + 1), crossing);
-    } else {
-      // The source lies on T's side of the edge (the paper's same-side case): no straight
-      // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
-      // (Even at a flat vertex: carrying the source on would let it circle round a vertex
-      // and pick up rounding drift; the face gets the straight path through another edge.)
-      kind = shorter_bend();
-    }
-
-    Real new_sigma, new_dT, ex, ey;   // ex, ey: the new source in g's edge frame
-    auto path = [&] {
-      if (kind == 0) {
-        new_sigma = sigma;
-        new_dT = sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy));
-        ex = sx, ey = sy;
-      } else if (kind == 1) {
-        new_sigma = sigma + std::sqrt(sx * sx + sy * sy);
-        new_dT = new_sigma + std::sqrt(cx * cx + cy * cy);
-        ex = 0, ey = 0;
-      } else {
-        new_sigma = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
-        new_dT = new_sigma + std::sqrt((cx - e1) * (cx - e1) + cy * cy);
-        ex = e1, ey = 0;
-      }
-    };
-    path();
-    if (!improves(t, new_dT, new_sigma)) return;
+    const int kind = choose_path(t, cj, v, u, probed);
+    Path p = path_of(kind, sigma, v.e1, u);
+    if (!improves(t, p.dT, p.sigma)) return;
     // A straight path that reaches the face's new corner P shorter than the straight line in
     // 3D does not exist: its unfolding passed a vertex on a side no surface path takes. It
     // bends instead, where the probe said or else at the end of the shorter bend (A's and B's
     // values came with the sending face, tested there; docs/gsp-core.md, rule 8). Tested only
     // on a path the face takes: a bend is never shorter than the straight path, so where the
     // face refuses the straight one it refuses the bend too.
-    if (kind == 0 && line_.sources &&
-        below_straight_line(g, cj, sigma + std::sqrt((sx - v.px) * (sx - v.px) + (sy - v.py) * (sy - v.py)), source)) {
+    if (kind == 0 && line_.sources && straight_below_line(g, cj, v, u, sigma, source)) {
       ++stats_.straight_line_bends;
-      kind = probed != 0 ? probed : shorter_bend();
-      path();
-      if (!improves(t, new_dT, new_sigma)) return;
+      p = path_of(probed != 0 ? probed : shorter_bend(u, v.e1), sigma, v.e1, u);
+      if (!improves(t, p.dT, p.sigma)) return;
     }
-    ++stats_.face_updates;
-    if (reached_ && (every_update_ || t.dT == std::numeric_limits<Real>::infinity())) reached_->push_back(face_of(g));
-    if (cj == 0 && e1 > 0)
-      t.sx = ex, t.sy = ey;   // halfedge 0's edge frame is the canonical frame
-    else
-      canonical_frame(t.len, cj, v).to_canonical(ex, ey, t.sx, t.sy);
-    t.sigma = new_sigma;
-    t.dT = new_dT;
-    t.tag = (t.tag & ~kSourceMask) | source;
-    // Max-distance: a face none of whose points can be within the limit is stored, not
-    // expanded (its centroid is farther than the limit by more than its own radius).
-    if (!(new_dT <= limit_) && !(new_dT - centroid_radius(t.len) <= limit_)) return;
-    push(QueueEntry<Real>{next_halfedge(g), new_dT});
-    push(QueueEntry<Real>{prev_halfedge(g), new_dT});
+    accept(g, t, cj, v, p, source, push);
   }
 
   // A step sent by another thread's expand() (RemoteStep; counted there), applied by the
@@ -295,6 +210,121 @@ class UpdateStep {
   }
 
  private:
+  // The sending face's source unfolded into g's edge frame (sx, sy; A = corner cj at the
+  // origin, B at (e1, 0), the face T on +y) and T's centroid there (cx, cy).
+  struct Unfolded {
+    Real sx, sy, cx, cy;
+  };
+  // A path into T: the new virtual source (ex, ey in g's edge frame) with sigma behind it,
+  // and T's centroid distance dT.
+  struct Path {
+    Real sigma, dT, ex, ey;
+  };
+
+  // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
+  // two faces disagree in orientation and walk the edge the same way.
+  static Unfolded unfold(const EdgeView<Real>& v, Index link, bool h_dir, Real hx, Real hy,
+                                                Real e1h) {
+    const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
+    // sy <= 0: the source lies on U's side, as it should
+    return {same_dir ? hx : e1h - hx, -hy, (v.px + v.e1) * Real(1.0 / 3.0), v.py * Real(1.0 / 3.0)};
+  }
+
+  // The bend at the end giving the shorter path source -> corner -> centroid (the paper's
+  // l1, l2): 1 at A, 2 at B.
+  static int shorter_bend(const Unfolded& u, Real e1) {
+    const Real l1 = std::sqrt(u.cx * u.cx + u.cy * u.cy) + std::sqrt(u.sx * u.sx + u.sy * u.sy);
+    const Real l2 = std::sqrt((u.cx - e1) * (u.cx - e1) + u.cy * u.cy) +
+                    std::sqrt((u.sx - e1) * (u.sx - e1) + u.sy * u.sy);
+    return l1 <= l2 ? 1 : 2;
+  }
+
+  // Which path the source takes into T: 0 straight through AB, 1 a new virtual source at A,
+  // 2 at B. The heuristic's probe decides (probed: its answer), then the corner rules
+  // (gsp/intrinsic/corner_rules.hpp) have the last word at A and B.
+  int choose_path(const FaceRecord<Real>& t, Index cj, const EdgeView<Real>& v,
+                                         const Unfolded& u, int& probed) const {
+    const Real sx = u.sx, sy = u.sy, cx = u.cx, cy = u.cy, e1 = v.e1;
+    if (!(sy <= 0)) {
+      // The source lies on T's side of the edge (the paper's same-side case): no straight
+      // path crosses AB; bend at the end giving the shorter path source -> corner -> centroid.
+      // (Even at a flat vertex: carrying the source on would let it circle round a vertex
+      // and pick up rounding drift; the face gets the straight path through another edge.)
+      return shorter_bend(u, e1);
+    }
+    // The heuristic's probe Q between the opposite corner P (lambda 0) and the centroid
+    // (lambda 1); a zero-length edge is seen through its single point.
+    Real qx = -1, qy = 0;
+    if (e1 > 0) {
+      const Real lambda = probe_.blend(t.len, e1, v.py);
+      qx = v.px + lambda * (cx - v.px);
+      qy = v.py + lambda * (cy - v.py);
+    }
+    // Does the segment Q -> S cross AB? Division-free form of the paper's
+    // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
+    const Real tq = qx * -sy + sx * qy;
+    const Real span = qy - sy;   // >= 0
+    int kind = tq < 0 ? 1 : (tq > e1 * span ? 2 : 0);
+    // Where the segment from the probe at lambda (between P and the centroid) to S crosses
+    // AB's line: 0 within AB, 1 before A, 2 beyond B (the same test as above). The corner
+    // rules ask it where a corner's kind has the last word.
+    auto crossing = [&](Real lambda) {
+      const Real rx = v.px + lambda * (cx - v.px), ry = v.py + lambda * (cy - v.py);
+      const Real tr = rx * -sy + sx * ry;
+      return tr < 0 ? 1 : (tr > e1 * (ry - sy) ? 2 : 0);
+    };
+    probed = kind;
+    if (kind != 0) {
+      const Index end = kind == 1 ? cj : (cj == 2 ? 0 : cj + 1);
+      auto within_flat_miss = [&] { return (kind == 1 ? -tq : tq - e1 * span) <= kFlatMiss * span; };
+      kind = intrinsic::reconsider_bend(kind, t.corner_kind(end), probe_.saddle_loose, within_flat_miss, crossing);
+    }
+    if (kind == 0 && e1 > 0)
+      kind = intrinsic::straight_past_saddles(t.saddle_corner(cj), t.saddle_corner(cj == 2 ? 0 : cj + 1), crossing);
+    return kind;
+  }
+
+  // The path of `kind` (choose_path) from the source, sigma behind it, to T's centroid.
+  static Path path_of(int kind, Real sigma, Real e1, const Unfolded& u) {
+    const Real sx = u.sx, sy = u.sy, cx = u.cx, cy = u.cy;
+    if (kind == 0) return {sigma, sigma + std::sqrt((cx - sx) * (cx - sx) + (cy - sy) * (cy - sy)), sx, sy};
+    if (kind == 1) {
+      const Real s = sigma + std::sqrt(sx * sx + sy * sy);
+      return {s, s + std::sqrt(cx * cx + cy * cy), Real(0), Real(0)};
+    }
+    const Real s = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
+    return {s, s + std::sqrt((cx - e1) * (cx - e1) + cy * cy), e1, Real(0)};
+  }
+
+  // The straight-line test (StraightLineTest): whether the straight path reaches T's new
+  // corner P below the straight line from its source in 3D.
+  bool straight_below_line(Index g, Index cj, const EdgeView<Real>& v, const Unfolded& u,
+                                                  Real sigma, Index source) const {
+    const Real dx = u.sx - v.px, dy = u.sy - v.py;
+    return below_straight_line(g, cj, sigma + std::sqrt(dx * dx + dy * dy), source);
+  }
+
+  // T takes path p: its record gets the new virtual source (in T's canonical frame), and T's
+  // other two edges are queued unless T lies wholly beyond the distance limit.
+  template <class Push>
+  void accept(Index g, FaceRecord<Real>& t, Index cj, const EdgeView<Real>& v, const Path& p,
+                                     Index source, Push&& push) {
+    ++stats_.face_updates;
+    if (reached_ && (every_update_ || t.dT == std::numeric_limits<Real>::infinity())) reached_->push_back(face_of(g));
+    if (cj == 0 && v.e1 > 0)
+      t.sx = p.ex, t.sy = p.ey;   // halfedge 0's edge frame is the canonical frame
+    else
+      canonical_frame(t.len, cj, v).to_canonical(p.ex, p.ey, t.sx, t.sy);
+    t.sigma = p.sigma;
+    t.dT = p.dT;
+    t.tag = (t.tag & ~kSourceMask) | source;
+    // Max-distance: a face none of whose points can be within the limit is stored, not
+    // expanded (its centroid is farther than the limit by more than its own radius).
+    if (!(p.dT <= limit_) && !(p.dT - centroid_radius(t.len) <= limit_)) return;
+    push(QueueEntry<Real>{next_halfedge(g), p.dT});
+    push(QueueEntry<Real>{prev_halfedge(g), p.dT});
+  }
+
   static constexpr Real kRelativeImprovement = std::numeric_limits<Real>::epsilon() * 4;
   static constexpr unsigned kTieBits = 8;
   // A non-negative value's float bits without the last kTieBits: ordered as the values are.
@@ -319,89 +349,5 @@ class UpdateStep {
   std::vector<std::vector<RemoteStep<Real>>>* outbox_ = nullptr;
   PropagationStats& stats_;
 };
-
-// ---- Strategies -----------------------------------------------------------------------------
-
-template <class Real>
-Real min_key(const std::vector<QueueEntry<Real>>& q) {
-  Real m = std::numeric_limits<Real>::infinity();
-  for (const auto& e : q) m = std::min(m, e.dT);
-  return m;
-}
-
-// The speed limiter and its adaptive switch to postponing: the shared driver
-// (gsp/intrinsic/speed_limiter.hpp), counted into the query's statistics.
-template <class Real>
-void run_speed_limiter(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a, Real f, PropagationStats& stats,
-                       bool postpone = false, bool adaptive = false) {
-  intrinsic::SpeedLimiterCounters counters;
-  intrinsic::run_speed_limiter(step, a, f, counters, postpone, adaptive);
-  stats.iterations += counters.iterations;
-  stats.enqueued += counters.enqueued;
-  stats.stale_skipped += counters.stale_skipped;
-  stats.postponed += counters.postponed;
-  stats.switched_to_postpone = stats.switched_to_postpone || counters.switched_to_postpone;
-}
-
-enum class Postpone { none, fixed, dynamic, hybrid };
-
-// The ping-pong schemes: every new entry goes to the next round; entries beyond the round's
-// threshold d_i are postponed (moved on untouched).
-template <class Real>
-void run_postpone(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& a, Postpone kind, Real f,
-                  Real f0, Real f1, PropagationStats& stats) {
-  std::vector<QueueEntry<Real>> b;
-  b.reserve(a.capacity());
-  const Real inf = std::numeric_limits<Real>::infinity();
-  Real min_next = min_key(a);
-  Real d = kind == Postpone::none ? inf : (kind == Postpone::hybrid ? min_next + f0 : min_next + f);
-  while (!a.empty()) {
-    ++stats.iterations;
-    min_next = inf;
-    for (const QueueEntry<Real>& e : a) {
-      if (step.is_stale(e)) {
-        ++stats.stale_skipped;
-        continue;
-      }
-      if (e.dT > d) {
-        ++stats.postponed;
-        b.push_back(e);
-        min_next = std::min(min_next, e.dT);
-        continue;
-      }
-      step.expand(e, [&](const QueueEntry<Real>& n) {
-        ++stats.enqueued;
-        b.push_back(n);
-        min_next = std::min(min_next, n.dT);
-      });
-    }
-    a.clear();
-    std::swap(a, b);
-    switch (kind) {
-      case Postpone::none: break;
-      // A fixed band skips ahead when nothing lies in it (e.g. sources with large offsets).
-      case Postpone::fixed: d = std::max(d + f, min_next); break;
-      case Postpone::dynamic: d = min_next + f; break;
-      case Postpone::hybrid: d = std::max(min_next + f0, d + f1); break;
-    }
-  }
-}
-
-template <class Real>
-void run_priority_queue(UpdateStep<Real>& step, std::vector<QueueEntry<Real>>& seeds,
-                        PropagationStats& stats) {
-  auto later = [](const QueueEntry<Real>& x, const QueueEntry<Real>& y) { return x.dT > y.dT; };
-  std::priority_queue<QueueEntry<Real>, std::vector<QueueEntry<Real>>, decltype(later)> heap(
-      later, std::move(seeds));
-  while (!heap.empty()) {
-    const QueueEntry<Real> e = heap.top();
-    heap.pop();
-    ++stats.iterations;
-    step.expand(e, [&](const QueueEntry<Real>& n) {
-      ++stats.enqueued;
-      heap.push(n);
-    });
-  }
-}
 
 }  // namespace gsp::detail
