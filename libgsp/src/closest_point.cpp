@@ -1,6 +1,7 @@
 #include <gsp/closest_point.hpp>
 #include <gsp/errors.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace gsp {
@@ -32,10 +33,12 @@ std::array<double, 3> closest_point_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) 
     const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
     return {0, 1 - w, w};
   }
-  const double denom = va + vb + vc;
-  if (!(denom > 0)) return {1, 0, 0};   // unreachable for finite input; keeps NaN out
-  const double v = vb / denom, w = vc / denom;
-  return {1 - v - w, v, w};
+  // Inside: each weight from its own area term (1 - v - w rounds below 0 for points a hair
+  // from edge bc: 2.7% of such points in a test, and the core refuses negative weights).
+  const double u = std::max(0.0, va), v = std::max(0.0, vb), w = std::max(0.0, vc);
+  const double sum = u + v + w;
+  if (!(sum > 0)) return {1, 0, 0};   // unreachable for finite input; keeps NaN out
+  return {u / sum, v / sum, w / sum};
 }
 
 ClosestPoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
