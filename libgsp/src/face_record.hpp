@@ -1,14 +1,12 @@
 #pragma once
 // What the propagation keeps per face (internal): the virtual source and the face's own edge
 // lengths in one 32-byte record, so an update touches one cache line of the face it improves.
-// Everything else the update step needs (the unfolding of the neighbour, the heuristic's probe)
-// is recomputed from the three lengths — a division and a square root are cheaper than the
+// Everything else the update step needs (the unfolding of the neighbour, the heuristic's probe:
+// probe_table.hpp) is recomputed from the three lengths — a division and a square root are cheaper than the
 // cache misses that tables of precomputed constants cost (docs/performance.md, "Single-thread
 // propagation", item 7).
 #include "state_allocator.hpp"
 
-#include <gsp/heuristic.hpp>
-#include <gsp/intrinsic/corner_rules.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/types.hpp>
 
@@ -58,26 +56,5 @@ using intrinsic::canonical_frame;
 using intrinsic::CanonicalFrame;
 using intrinsic::edge_view;
 using intrinsic::EdgeView;
-
-// The visibility heuristic's parameters in the propagation's scalar type.
-template <class Real>
-struct ProbeTable {
-  Real c, g, hh, hg;
-  Real lambda[16];
-  Real saddle_loose;   // rule 7's probe (gsp/intrinsic/corner_rules.hpp)
-
-  // delaunay: the faces are an intrinsic Delaunay triangulation (rule 7's looser probe).
-  ProbeTable(const VisibilityHeuristic& h, bool delaunay)
-      : c(Real(h.c)), g(Real(h.g)), hh(Real(h.hh)), hg(Real(h.hg)),
-        saddle_loose(Real(delaunay ? intrinsic::kSaddleLooseLambda : intrinsic::kSaddleLooseLambdaInputFaces)) {
-    for (int i = 0; i < 16; ++i) lambda[i] = Real(h.lambda[i]);
-  }
-  // lambda for the face with edge lengths len entered over an edge of length e1, height h.
-  Real blend(const Real len[3], Real e1, Real h) const {
-    const Real max_e = std::max({len[0], len[1], len[2]});
-    const Real min_e = std::min({len[0], len[1], len[2]});
-    return lambda[visibility_signature(c, g, hh, hg, e1, max_e, min_e, h)];
-  }
-};
 
 }  // namespace gsp::detail

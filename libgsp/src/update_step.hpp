@@ -5,6 +5,7 @@
 // Internal header: templated on the scalar type, instantiated for float and double in
 // geodesic_solver.cpp. The hot loop allocates nothing and calls nothing virtual.
 #include "face_record.hpp"
+#include "probe_table.hpp"
 #include "ring_links.hpp"
 
 #include <gsp/geodesics.hpp>
