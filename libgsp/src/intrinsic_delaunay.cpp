@@ -246,8 +246,9 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
   constexpr char kPending = 1, kPendingDelaunay = 2;   // in the stack; the latter Delaunay as first seen
   std::vector<char> queued(nh, 0);
   for (Index h = 0; h < nh; ++h) {
+    if (!(h < t.ring[h])) continue;   // each edge once, by its smaller slot (and no boundary)
     const Index g = flippable_twin(t, h);
-    if (g != kInvalidIndex && h < t.ring[h]) queued[h] = is_delaunay(t, h, g) ? kPendingDelaunay : kPending;
+    if (g != kInvalidIndex) queued[h] = is_delaunay(t, h, g) ? kPendingDelaunay : kPending;
   }
   std::vector<char> changed(t.triangles.size(), 0);   // faces a flip has rewritten
   std::vector<Index> stack;                            // pushed by flips, above the initial part
