@@ -331,6 +331,7 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
     for (Index x : {base1 + 0, base1 + 1, base2 + 0, base2 + 1})
       if (!queued[x] && flippable_twin(t, x) != kInvalidIndex) stack.push_back(x), queued[x] = kPending;
   }
+  t.flipped = std::move(changed);
   return flips;
 }
 

@@ -27,6 +27,7 @@ struct IntrinsicTriangulation {
   std::vector<bool> skipped;         // faces left out of the propagation
   const std::vector<Vec3>* positions = nullptr;   // optional: picks each patch's winding (above)
   std::size_t reoriented = 0;        // out: faces whose winding make_intrinsic_delaunay reversed
+  std::vector<char> flipped;         // out: per face, whether a flip rewrote it (its lengths are new)
 };
 
 // Winds the faces consistently (see above; reversing keeps corner 0: (a, b, c) -> (a, c, b)),

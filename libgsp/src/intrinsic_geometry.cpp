@@ -26,9 +26,10 @@ double corner_angle(double a, double b, double c) {
 
 }  // namespace
 
-bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face) {
+bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face,
+                          const std::vector<char>* only_faces) {
   for (std::size_t f = 0; f < skipped_face.size(); ++f) {
-    if (skipped_face[f]) continue;
+    if (skipped_face[f] || (only_faces && !(*only_faces)[f])) continue;
     // x >= y >= z without a sort call (this runs over every face, twice per solver).
     const double a = length[3 * f], b = length[3 * f + 1], c = length[3 * f + 2];
     const double hi = std::max(a, b), lo = std::min(a, b);
@@ -87,8 +88,9 @@ std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
   return length;
 }
 
-void snap_zero_lengths(std::vector<double>& length) {
+void snap_zero_lengths(std::vector<double>& length, const std::vector<char>* only_faces) {
   for (std::size_t f = 0; 3 * f < length.size(); ++f) {
+    if (only_faces && !(*only_faces)[f]) continue;
     double* l = &length[3 * f];
     const double longest = std::max({l[0], l[1], l[2]});
     for (int i = 0; i < 3; ++i)

@@ -42,7 +42,9 @@ using intrinsic::zero_length_edge;
 // unfolding of a needle or cap in float lands beside the face itself (CAD STLs: distances far
 // below the straight line). Zero-area faces with a non-zero edge count as unresolved.
 inline constexpr double kFloatAspectLimit = 400;
-bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face);
+// only_faces: look at these faces alone (non-zero entries), the others known to be fine.
+bool needs_double_lengths(const std::vector<double>& length, const std::vector<bool>& skipped_face,
+                          const std::vector<char>* only_faces = nullptr);
 
 // Halfedge lengths and their mean live in the shared layer.
 using intrinsic::halfedge_lengths;

@@ -72,9 +72,12 @@ void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   delaunay->length = std::move(t.length);
   // Three tables from the flipped faces, two of them apart from the third.
   Triangulation& d = *delaunay;
+  // A face no flip rewrote has the input's lengths (reordered at most), snapped already and, on
+  // an input that needs no doubles, fine in float: only the flipped faces are looked at then.
+  const std::vector<char> flipped = std::move(t.flipped);
   auto lengths_and_corners = [&] {
-    detail::snap_zero_lengths(d.length);
-    d.needs_double = detail::needs_double_lengths(d.length, skipped_face);
+    detail::snap_zero_lengths(d.length, &flipped);
+    d.needs_double = detail::needs_double_lengths(d.length, skipped_face, input.needs_double ? nullptr : &flipped);
     d.build_corners(mesh().num_vertices());
   };
   auto links = [&] { d.set_direction_bits(std::move(t.ring)); };

@@ -23,7 +23,8 @@ std::vector<double> halfedge_lengths(const TriangleMesh& mesh);
 // whose two parts share a centre). snap_zero_lengths() makes such lengths exactly 0, which
 // every frame and unfolding handles as coincident corners (face_record.hpp).
 inline constexpr double kZeroEdge = 1e-12;
-void snap_zero_lengths(std::vector<double>& length);
+// only_faces: snap these faces alone (non-zero entries); the others are snapped already.
+void snap_zero_lengths(std::vector<double>& length, const std::vector<char>* only_faces = nullptr);
 inline bool zero_length_edge(const std::vector<double>& length, Index h) { return !(length[h] > 0); }
 
 // The member of h's radial ring that the propagation crosses to next: members in skipped faces
