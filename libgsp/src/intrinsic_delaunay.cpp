@@ -159,18 +159,18 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
     while (patch[x] != x) x = patch[x] = patch[patch[x]];
     return x;
   };
-  std::vector<bool> open_face(nf, false);   // a boundary, non-manifold or skipped-neighbour edge
+  std::vector<char> open_face(nf, 0);   // a boundary, non-manifold or skipped-neighbour edge
   for (Index f = 0; f < nf; ++f) {
     if (t.skipped[f]) continue;
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, g = t.ring[h];
       if (g == h || t.ring[g] != h) {
-        open_face[f] = true;
+        open_face[f] = 1;
         continue;
       }
       const Index n = face_of(g);
       if (t.skipped[n]) {
-        open_face[f] = true;
+        open_face[f] = 1;
         continue;
       }
       if (n == f || h > g) continue;
@@ -179,34 +179,44 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
       if (a != b) patch[std::max(a, b)] = std::min(a, b);   // the root: the patch's first face
     }
   }
-  // Roots, then patch numbers in face order (a root precedes the other faces of its patch).
+  // Roots, then patch numbers in face order (a root precedes the other faces of its patch),
+  // with each patch's face count and whether it is open.
   for (Index f = 0; f < nf; ++f) patch[f] = find(f);
-  Index patches = 0;
-  for (Index f = 0; f < nf; ++f) patch[f] = patch[f] == f ? patches++ : patch[patch[f]];
-  std::vector<bool> flip_face(nf, false);
+  std::vector<Index> faces;
+  std::vector<char> open;
+  for (Index f = 0; f < nf; ++f) {
+    if (patch[f] == f) {
+      patch[f] = Index(faces.size());
+      faces.push_back(0), open.push_back(0);
+    } else {
+      patch[f] = patch[patch[f]];
+    }
+    if (t.skipped[f]) continue;
+    ++faces[patch[f]];
+    open[patch[f]] |= open_face[f];
+  }
+  const std::size_t patches = faces.size();
+  std::vector<bool> flip_face;
   std::size_t count = 0;
   if (t.positions) {
     const std::vector<Vec3>& p = *t.positions;
-    std::vector<Index> faces(patches, 0);
-    std::vector<char> open(patches, 0);
-    for (Index f = 0; f < nf; ++f) {
-      if (t.skipped[f]) continue;
-      ++faces[patch[f]];
-      open[patch[f]] |= char(open_face[f]);
-    }
     // invert_patch for a patch with no reversed face: closed, the sign of its signed volume
     // (0: keep); open, the sign of the volume about its centroid where that is clear, else keep.
     std::vector<double> volume(patches, 0.0), tetrahedra(patches, 0.0);
     std::vector<Vec3> centre(patches, Vec3{0, 0, 0});
+    bool any_open = false;
     for (Index f = 0; f < nf; ++f) {
       if (t.skipped[f]) continue;
       const Index k = patch[f];
       const Triangle& c = t.triangles[f];
-      if (!open[k]) volume[k] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
-      else
+      if (!open[k]) {
+        volume[k] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
+      } else {
+        any_open = true;
         for (Index x : c) centre[k] = centre[k] + (1.0 / (3.0 * double(faces[k]))) * p[x];
+      }
     }
-    for (Index f = 0; f < nf; ++f) {
+    for (Index f = 0; any_open && f < nf; ++f) {
       if (t.skipped[f] || !open[patch[f]]) continue;
       const Index k = patch[f];
       const Triangle& c = t.triangles[f];
@@ -215,11 +225,16 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
       volume[k] += x;
       tetrahedra[k] += std::abs(x);
     }
-    for (Index f = 0; f < nf; ++f) {
-      if (t.skipped[f]) continue;
-      const Index k = patch[f];
-      const bool invert = open[k] ? std::abs(volume[k]) >= 0.25 * tetrahedra[k] && volume[k] < 0 : volume[k] < 0;
-      if (invert) flip_face[f] = true, ++count;
+    std::vector<char> invert(patches, 0);
+    bool any_invert = false;
+    for (std::size_t k = 0; k < patches; ++k) {
+      invert[k] = open[k] ? std::abs(volume[k]) >= 0.25 * tetrahedra[k] && volume[k] < 0 : volume[k] < 0;
+      any_invert = any_invert || invert[k];
+    }
+    if (any_invert) {
+      flip_face.assign(nf, false);
+      for (Index f = 0; f < nf; ++f)
+        if (!t.skipped[f] && invert[patch[f]]) flip_face[f] = true, ++count;
     }
   }
   reverse_faces(t, flip_face, count);
