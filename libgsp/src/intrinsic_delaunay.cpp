@@ -1,5 +1,7 @@
 #include "intrinsic_delaunay.hpp"
 
+#include "disjoint_sets.hpp"
+
 #include <gsp/connectivity.hpp>
 
 #include <algorithm>
@@ -153,12 +155,7 @@ std::size_t orient_patches(IntrinsicTriangulation& t) {
 // of a 2.2M-vertex preparation). False, changing nothing, when some edge is inconsistent.
 bool orient_consistent_patches(IntrinsicTriangulation& t) {
   const Index nf = Index(t.triangles.size());
-  std::vector<Index> patch(nf);   // union-find over faces, then each face's patch number
-  for (Index f = 0; f < nf; ++f) patch[f] = f;
-  auto find = [&](Index x) {
-    while (patch[x] != x) x = patch[x] = patch[patch[x]];
-    return x;
-  };
+  DisjointSets sets(nf);   // over faces; a patch's root is its first face
   std::vector<char> open_face(nf, 0);   // a boundary, non-manifold or skipped-neighbour edge
   for (Index f = 0; f < nf; ++f) {
     if (t.skipped[f]) continue;
@@ -175,13 +172,13 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
       }
       if (n == f || h > g) continue;
       if (same_direction(t, h, g)) return false;
-      const Index a = find(f), b = find(n);
-      if (a != b) patch[std::max(a, b)] = std::min(a, b);   // the root: the patch's first face
+      sets.unite(f, n);
     }
   }
   // Roots, then patch numbers in face order (a root precedes the other faces of its patch),
   // with each patch's face count and whether it is open.
-  for (Index f = 0; f < nf; ++f) patch[f] = find(f);
+  std::vector<Index>& patch = sets.parent;   // each face's root, then its patch number
+  for (Index f = 0; f < nf; ++f) patch[f] = sets.find(f);
   std::vector<Index> faces;
   std::vector<char> open;
   for (Index f = 0; f < nf; ++f) {
