@@ -50,13 +50,25 @@ bool is_delaunay(const IntrinsicTriangulation& t, Index h, Index g) {
   return ac + ad <= 3.14159265358979323846 * (1 + 1e-9);
 }
 
+// The rule for a patch's winding (see the header), from what is measured of it as wound like
+// its first face: 6 x its signed volume about the origin (used when it is closed and not 0),
+// about its centroid with the sum of its tetrahedra's absolute values, and how many of its
+// faces are reversed against the first. True: wind it the other way round.
+bool wound_inwards(bool closed, double origin_volume, double centroid_volume, double tetrahedra,
+                   std::size_t reversed, std::size_t faces) {
+  if (closed && origin_volume != 0) return origin_volume < 0;
+  // Open: about the centroid, a surface with a few holes still encloses most of its volume
+  // one way; a sheet (|volume| small against its tetrahedra) leaves it to the majority.
+  if (std::abs(centroid_volume) >= 0.25 * tetrahedra && centroid_volume != 0) return centroid_volume < 0;
+  if (2 * reversed != faces) return 2 * reversed > faces;
+  return centroid_volume < 0;
+}
+
 // Whether a patch (faces with their winding relative to its first face) is to be wound the
-// other way round from its first face; see the header for the rule.
+// other way round from its first face.
 bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& patch,
                   const std::vector<std::int8_t>& reverse, std::size_t reversed, bool closed) {
   if (!t.positions) return 2 * reversed > patch.size();   // majority; a tie keeps the first face's
-  // 6 x signed volume of the patch as wound like its first face, about `origin`, and the sum
-  // of its tetrahedra's absolute values.
   auto volume = [&](Vec3 origin, double* unsigned_sum) {
     double v = 0;
     for (Index f : patch) {
@@ -68,20 +80,14 @@ bool invert_patch(const IntrinsicTriangulation& t, const std::vector<Index>& pat
     }
     return v;
   };
-  if (closed) {
-    const double v = volume(Vec3{0, 0, 0}, nullptr);
-    if (v != 0) return v < 0;
-  }
-  // Open: about the centroid, a surface with a few holes still encloses most of its volume
-  // one way; a sheet (|volume| small against its tetrahedra) leaves it to the majority.
+  const double origin_volume = closed ? volume(Vec3{0, 0, 0}, nullptr) : 0.0;
+  if (closed && origin_volume != 0) return wound_inwards(true, origin_volume, 0, 0, reversed, patch.size());
   Vec3 centre{0, 0, 0};
   for (Index f : patch)
     for (Index x : t.triangles[f]) centre = centre + (1.0 / (3.0 * double(patch.size()))) * (*t.positions)[x];
   double tetrahedra = 0;
   const double v = volume(centre, &tetrahedra);
-  if (std::abs(v) >= 0.25 * tetrahedra && v != 0) return v < 0;
-  if (2 * reversed != patch.size()) return 2 * reversed > patch.size();
-  return v < 0;
+  return wound_inwards(closed, origin_volume, v, tetrahedra, reversed, patch.size());
 }
 
 // Reverses the marked faces: (a, b, c) -> (a, c, b), halfedge slots 0 and 2 trade places,
@@ -150,7 +156,7 @@ std::size_t orient_patches(IntrinsicTriangulation& t) {
 
 // Already consistent across every two-face edge (how most meshes come): the patches are the
 // components over those edges, no face turns within one, and each patch is wound as
-// invert_patch says for a patch with no reversed face. The same answer as orient_patches,
+// wound_inwards says for a patch with no reversed face. The same answer as orient_patches,
 // from passes in face order (the face-by-face growth reads the mesh in a random order: 0.4 s
 // of a 2.2M-vertex preparation). False, changing nothing, when some edge is inconsistent.
 bool orient_consistent_patches(IntrinsicTriangulation& t) {
@@ -197,24 +203,24 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
   std::size_t count = 0;
   if (t.positions) {
     const std::vector<Vec3>& p = *t.positions;
-    // invert_patch for a patch with no reversed face: closed, the sign of its signed volume
-    // (0: keep); open, the sign of the volume about its centroid where that is clear, else keep.
-    std::vector<double> volume(patches, 0.0), tetrahedra(patches, 0.0);
+    // What wound_inwards reads of each patch (none reversed): the volume about the origin of
+    // a closed one; the centroid, the volume about it and the tetrahedra of the others (open,
+    // or closed with a zero volume).
+    std::vector<double> origin_volume(patches, 0.0), volume(patches, 0.0), tetrahedra(patches, 0.0);
     std::vector<Vec3> centre(patches, Vec3{0, 0, 0});
-    bool any_open = false;
-    for (Index f = 0; f < nf; ++f) {
-      if (t.skipped[f]) continue;
-      const Index k = patch[f];
-      const Triangle& c = t.triangles[f];
-      if (!open[k]) {
-        volume[k] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
-      } else {
-        any_open = true;
-        for (Index x : c) centre[k] = centre[k] + (1.0 / (3.0 * double(faces[k]))) * p[x];
+    for (Index f = 0; f < nf; ++f)
+      if (!t.skipped[f] && !open[patch[f]]) {
+        const Triangle& c = t.triangles[f];
+        origin_volume[patch[f]] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
       }
-    }
-    for (Index f = 0; any_open && f < nf; ++f) {
-      if (t.skipped[f] || !open[patch[f]]) continue;
+    std::vector<char> about_centre(patches, 0);
+    bool any = false;
+    for (std::size_t k = 0; k < patches; ++k) any |= about_centre[k] = char(open[k] || origin_volume[k] == 0);
+    for (Index f = 0; any && f < nf; ++f)
+      if (!t.skipped[f] && about_centre[patch[f]])
+        for (Index x : t.triangles[f]) centre[patch[f]] = centre[patch[f]] + (1.0 / (3.0 * double(faces[patch[f]]))) * p[x];
+    for (Index f = 0; any && f < nf; ++f) {
+      if (t.skipped[f] || !about_centre[patch[f]]) continue;
       const Index k = patch[f];
       const Triangle& c = t.triangles[f];
       const Vec3 a = p[c[0]] - centre[k], b = p[c[1]] - centre[k], d = p[c[2]] - centre[k];
@@ -225,7 +231,7 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
     std::vector<char> invert(patches, 0);
     bool any_invert = false;
     for (std::size_t k = 0; k < patches; ++k) {
-      invert[k] = open[k] ? std::abs(volume[k]) >= 0.25 * tetrahedra[k] && volume[k] < 0 : volume[k] < 0;
+      invert[k] = char(faces[k] > 0 && wound_inwards(!open[k], origin_volume[k], volume[k], tetrahedra[k], 0, faces[k]));
       any_invert = any_invert || invert[k];
     }
     if (any_invert) {
