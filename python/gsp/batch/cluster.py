@@ -13,6 +13,7 @@ def connect(scheduler=None, workers=None):
     Returns (client, close); call close() at the end (it also stops a cluster it started).
     """
     import logging
+    import dask
     from distributed import Client, LocalCluster
     if scheduler and workers:
         raise UsageError("--scheduler and --workers exclude each other")
@@ -28,8 +29,12 @@ def connect(scheduler=None, workers=None):
         raise UsageError(f"--workers {n}: at least 1")
     scratch = tempfile.mkdtemp(prefix="gsp-batch-workers-")
     try:
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
-                               silence_logs=logging.ERROR, local_directory=scratch)
+        # Without the workers' statistical profiler (a thread sampling every stack each 10 ms):
+        # the dashboard's profile page has nothing to show for tasks that wait on an app, and
+        # on a machine with as many cores as workers that thread takes a worker's time.
+        with dask.config.set({"distributed.worker.profile.enabled": False}):
+            cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True, dashboard_address=":0",
+                                   silence_logs=logging.ERROR, local_directory=scratch)
         client = Client(cluster)
     except BaseException:
         shutil.rmtree(scratch, ignore_errors=True)

@@ -11,6 +11,7 @@ import time
 import uuid
 
 from .child import _CHILD
+from .inputs import _sha256_file
 
 # The apps die with their worker (no orphans computing for nobody when a worker is killed):
 # setpriv --pdeathsig sets PR_SET_PDEATHSIG and execs the app. A wrapper, not preexec_fn, so that
@@ -73,6 +74,12 @@ def _run_task(spec):
     # An app writes its statistics to stdout (no scratch folder per mesh: creating and removing
     # one cost 7 ms a mesh here, as much as half a small mesh's own work); a callable's child
     # gets a scratch folder for its function and result.
+    if spec.get("hash_input"):
+        # for the manifest (the client left it to the worker: runner.run)
+        try:
+            out["input_sha256"] = _sha256_file(spec["input"])
+        except OSError:
+            pass    # the job reports the unreadable file
     tmpdir = None if spec["kind"] == "app" else tempfile.mkdtemp(prefix="gsp-batch-")
     output = spec["output"]
     tmp_output = None
