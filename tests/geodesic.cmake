@@ -7,6 +7,7 @@ gsp_test(geodesic_invariants_test SOURCES geodesic_invariants_test.cpp DEPS gsp:
 gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gsp::io)
 if(GSP_WITH_CGAL)
   gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
+  gsp_test(geodesic_windows_test SOURCES geodesic_windows_test.cpp DEPS gsp::core gsp::io gsp::reference)
 endif()
 if(TARGET gsp-geodesic)
   gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io gsp::render)

@@ -6,6 +6,7 @@
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 #include <gsp/reference/exact_geodesics.hpp>
 #include <gsp/reference/heat_method.hpp>
+#include <gsp/window_geodesics.hpp>
 
 #include <algorithm>
 #include <sstream>
@@ -35,6 +36,8 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::points_gsp, "points-gsp", "point-cloud GSP on the mesh's vertices (local triangles of the k-NN graph, normals by PCA)", false},
       {Method::points_graph_gsp, "points-graph-gsp", "point-cloud GSP over the links of the same k-NN graph (virtual sources in tangent planes)", false},
       {Method::points_dijkstra, "points-dijkstra", "Dijkstra on the same k-NN graph of the mesh's vertices", false},
+      {Method::gsp_windows, "gsp-windows", "experimental: two windows per face instead of one virtual source (input triangles, priority queue, double)", false},
+      {Method::gsp_windows3, "gsp-windows3", "experimental: three windows per face", false},
   };
   return methods;
 }
@@ -188,6 +191,16 @@ class PointCloudRunner : public Runner {
   pointcloud::PointGeodesicOptions options_;
 };
 
+class WindowRunner : public Runner {
+ public:
+  WindowRunner(const TriangleMesh& mesh, unsigned windows) : solver_(mesh) { options_.windows = windows; }
+  Outcome run(Index source) override { return {solver_.distances_from_vertex(source, options_), {}, false}; }
+
+ private:
+  WindowGeodesics solver_;
+  WindowOptions options_;
+};
+
 }  // namespace
 
 std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std::uint64_t seed, unsigned neighbours) {
@@ -221,6 +234,8 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
       return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::graph_gsp);
     case Method::points_dijkstra:
       return std::make_unique<PointCloudRunner>(mesh, neighbours, pointcloud::PointMethod::dijkstra);
+    case Method::gsp_windows: return std::make_unique<WindowRunner>(mesh, 2);
+    case Method::gsp_windows3: return std::make_unique<WindowRunner>(mesh, 3);
   }
   return std::make_unique<GspRunner>(mesh, so, go);
 }

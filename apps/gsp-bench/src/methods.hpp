@@ -35,6 +35,8 @@ enum class Method {
   points_gsp,          // point-cloud GSP on the mesh's vertices (gsp::pointcloud, local triangles)
   points_graph_gsp,    // point-cloud GSP over the k-NN graph's links (PointMethod::graph_gsp)
   points_dijkstra,     // Dijkstra on the same k-NN graph (the point-cloud baseline)
+  gsp_windows,         // experimental: two windows per face (gsp/window_geodesics.hpp)
+  gsp_windows3,        // ... three
 };
 
 struct MethodInfo {

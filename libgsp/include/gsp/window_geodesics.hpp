@@ -1,0 +1,52 @@
+#pragma once
+// Experimental (issue 18): geodesic distances with a few *windows* per face instead of GSP's
+// one virtual source. A window is a virtual source S with its sigma, the two rays from S through
+// the vertices that bound what S sees through the faces it crossed, and beyond each ray a
+// shadow wedge at the ray's vertex W (bounded by the ray's continuation and a ray W -> U) in
+// which a point takes the path bent at W. A point beyond a ray and outside its shadow wedge
+// gets nothing from that window. Every value a window gives is the length of a path on the
+// surface, so the result never lies below the exact geodesic distance (up to rounding); a face
+// keeps the K windows that together give it the lowest values at seven sample points (corners,
+// centroid, edge midpoints). Windows of one source that touch are merged (exact on a plane).
+//
+// Measured against GSP and CGAL's exact method in docs/benchmarks.md ("Windows per face");
+// single-threaded, double precision, priority-queue order. Not used by
+// the solver or the apps: gsp-bench's `gsp-windows` method runs it.
+#include <gsp/mesh.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace gsp {
+
+struct WindowOptions {
+  unsigned windows = 2;   // per face, 1 to 8
+};
+
+struct WindowStats {
+  std::size_t window_updates = 0;   // windows a face took (new or merged)
+  std::size_t faces_reached = 0;
+};
+
+class WindowGeodesics {
+ public:
+  // Prepares the faces (by default the intrinsic Delaunay flip of the input's, as GSP's solver
+  // does), their planar frames and the edge rings (non-manifold edges: every other face of the
+  // edge is a neighbour, as in GSP).
+  explicit WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay = true);
+  ~WindowGeodesics();
+  WindowGeodesics(WindowGeodesics&&) noexcept;
+  WindowGeodesics& operator=(WindowGeodesics&&) noexcept;
+
+  // Distances from one source vertex (+inf where unreached). Throws std::invalid_argument for
+  // a vertex out of range or a window count outside 1..8.
+  std::vector<double> distances_from_vertex(Index source, const WindowOptions& options = {},
+                                            WindowStats* stats = nullptr) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gsp
