@@ -60,18 +60,27 @@ bool beyond_ray(const Window& win, int r, V2 p, double o) {
 }
 
 // Whether p (beyond ray r) lies in the shadow wedge at W: between the ray's continuation past
-// W and the ray W -> U.
+// W and the ray W -> U. A wedge of no width (U on the continuation: collinear vertices, as on
+// CAD grids) holds nothing; its cross products are rounding noise of either sign.
 bool in_shadow(const Window& win, int r, V2 p) {
   if (win.shadow[r] == kNoShadow) return false;
   if (win.shadow[r] == kWholeFace) return true;
   const V2 w = win.w[r], u = win.u[r], d = w - win.s;
-  if (cross(d, u - w) * cross(d, p - w) < 0) return false;
-  const double a = cross(u - w, p - w), b = cross(u - w, d);
-  return a * b >= -1e-12 * (norm(u - w) * (norm(p - w) + norm(d)));
+  const double side = cross(d, u - w);
+  if (!(std::abs(side) > 1e-12 * norm(d) * norm(u - w))) return false;
+  const double sgn = side > 0 ? 1.0 : -1.0, tol = 1e-12 * norm(p - w);
+  return sgn * cross(d, p - w) >= -tol * norm(d) && sgn * cross(u - w, p - w) <= tol * norm(u - w);
+}
+
+// Whether the window's two rays bound a wedge of some width (collinear vertices can make them
+// coincide; such a window sees nothing).
+bool has_width(const Window& win) {
+  return std::abs(ray_side(win)) > 1e-12 * norm(win.w[0] - win.s) * norm(win.w[1] - win.s);
 }
 
 double value_at(const Window& win, V2 p) {
   if (win.rays) {
+    if (!has_width(win)) return kInf;
     const double o = ray_side(win);
     for (int r = 0; r < 2; ++r)
       if (beyond_ray(win, r, p, o))
@@ -85,10 +94,12 @@ double value_at(const Window& win, V2 p) {
 std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x, V2 y) {
   if (win.shadow[r] == kNoShadow) return {kNoShadow, {}};
   if (win.shadow[r] == kWholeFace) return {kBounded, x};
+  (void)y;   // Y lies on the wedge's other side, the ray's continuation
   const V2 w = win.w[r], u = win.u[r], d = w - win.s;
-  const double b = cross(u - w, d);
-  if (cross(u - w, x - w) * b >= 0) return {kBounded, x};   // all of X..Y inside: bounded by W -> X
-  if (cross(u - w, y - w) * b < 0) return {kNoShadow, {}};   // none of it
+  const double side = cross(d, u - w);
+  if (!(std::abs(side) > 1e-12 * norm(d) * norm(u - w))) return {kNoShadow, {}};   // no width
+  const double sgn = side > 0 ? 1.0 : -1.0;
+  if (sgn * cross(u - w, x - w) <= 0) return {kBounded, x};   // X inside: bounded by W -> X now
   return {kBounded, u};
 }
 
@@ -106,6 +117,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
     return n;
   };
   if (!(cross(ab, win.s - a) * inside < 0)) return corners();   // S on T's side: bend at A or B
+  if (win.rays && !has_width(win)) return 0;
   double lo = 0, hi = 1;
   V2 anchor[2] = {a, b};
   int from_ray[2] = {-1, -1}, hidden_by = -1;
@@ -128,7 +140,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
       }
     }
   }
-  if (!(lo < hi)) {
+  if (!(hi - lo > 1e-9)) {
     // S sees nothing of AB. Behind the ray that hides it, its vertex W is the source, seen
     // through its shadow wedge (W a corner of the sending face sees all of AB); without a
     // wedge there, the bends at A and B.
@@ -204,6 +216,8 @@ int merge(const Window& x, const Window& y, Window* out) {
 
 struct WindowGeodesics::Impl {
   std::size_t num_vertices = 0;
+  const TriangleMesh* input = nullptr;    // for the relaxation along its edges (caller keeps it)
+  std::vector<Index> input_corner_begin, input_corners;   // vertex -> input corners, CSR
   std::vector<Triangle> triangles;        // the propagation's faces (intrinsic Delaunay or input)
   std::vector<Index> ring;                // per halfedge: the next face's halfedge on its edge
   std::vector<std::array<V2, 3>> frame;   // per face: its corners in its own plane
@@ -214,6 +228,7 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaun
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.num_vertices = mesh.positions.size();
+  m.input = &mesh;
   const std::vector<bool> skipped = intrinsic::skipped_faces(mesh);
   std::vector<double> length = intrinsic::halfedge_lengths(mesh);
   intrinsic::snap_zero_lengths(length);
@@ -241,16 +256,20 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaun
     const double x = l0 > 0 ? (l0 * l0 + l2 * l2 - l1 * l1) / (2 * l0) : 0.0;
     m.frame[f] = {V2{0, 0}, V2{l0, 0}, V2{x, std::sqrt(std::max(l2 * l2 - x * x, 0.0))}};
   }
-  m.corner_begin.assign(m.num_vertices + 1, 0);
-  for (std::size_t f = 0; f < m.triangles.size(); ++f)
-    if (!skipped[f])
-      for (Index v : m.triangles[f]) ++m.corner_begin[v + 1];
-  for (std::size_t v = 0; v < m.num_vertices; ++v) m.corner_begin[v + 1] += m.corner_begin[v];
-  m.corners.resize(m.corner_begin.back());
-  std::vector<Index> fill(m.corner_begin.begin(), m.corner_begin.end() - 1);
-  for (std::size_t f = 0; f < m.triangles.size(); ++f)
-    if (!skipped[f])
-      for (Index i = 0; i < 3; ++i) m.corners[fill[m.triangles[f][i]]++] = Index(3 * f + i);
+  auto corners_of = [&](const std::vector<Triangle>& tris, std::vector<Index>& begin, std::vector<Index>& corners) {
+    begin.assign(m.num_vertices + 1, 0);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (!skipped[f])
+        for (Index v : tris[f]) ++begin[v + 1];
+    for (std::size_t v = 0; v < m.num_vertices; ++v) begin[v + 1] += begin[v];
+    corners.resize(begin.back());
+    std::vector<Index> fill(begin.begin(), begin.end() - 1);
+    for (std::size_t f = 0; f < tris.size(); ++f)
+      if (!skipped[f])
+        for (Index i = 0; i < 3; ++i) corners[fill[tris[f][i]]++] = Index(3 * f + i);
+  };
+  corners_of(m.triangles, m.corner_begin, m.corners);
+  corners_of(mesh.triangles, m.input_corner_begin, m.input_corners);
 }
 
 WindowGeodesics::~WindowGeodesics() = default;
@@ -401,7 +420,7 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
   }
 
   std::vector<double> dist(nv, kInf);
-  std::size_t reached = 0;
+  std::size_t reached = 0, relaxed = 0;
   for (Index f = 0; f < nf; ++f) {
     if (count[f] > 0) ++reached;
     for (unsigned w = 0; w < count[f]; ++w)
@@ -411,7 +430,29 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
       }
   }
   dist[source] = 0;
-  if (stats) stats->window_updates = updates, stats->faces_reached = reached;
+  // Along the input's edges, as GSP's vertex relaxation: a value above the shortest edge path
+  // (a window lost where a face kept others, a vertex the windows do not reach across a
+  // vertex-only joint) takes that path, which is on the surface too.
+  {
+    const TriangleMesh& in = *mesh.input;
+    using Item = std::pair<double, Index>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    for (Index v = 0; v < nv; ++v)
+      if (dist[v] < kInf) heap.emplace(dist[v], v);
+    while (!heap.empty()) {
+      const auto [d, v] = heap.top();
+      heap.pop();
+      if (d > dist[v]) continue;
+      for (Index c = mesh.input_corner_begin[v]; c < mesh.input_corner_begin[v + 1]; ++c) {
+        const Triangle& t = in.triangles[face_of(mesh.input_corners[c])];
+        for (Index x : t) {
+          const double nd = d + distance(in.positions[v], in.positions[x]);
+          if (nd < dist[x] * (1 - 1e-12)) dist[x] = nd, heap.emplace(nd, x), ++relaxed;
+        }
+      }
+    }
+  }
+  if (stats) stats->window_updates = updates, stats->faces_reached = reached, stats->relaxed = relaxed;
   return dist;
 }
 

@@ -4,10 +4,13 @@
 // the vertices that bound what S sees through the faces it crossed, and beyond each ray a
 // shadow wedge at the ray's vertex W (bounded by the ray's continuation and a ray W -> U) in
 // which a point takes the path bent at W. A point beyond a ray and outside its shadow wedge
-// gets nothing from that window. Every value a window gives is the length of a path on the
-// surface, so the result never lies below the exact geodesic distance (up to rounding); a face
+// gets nothing from that window. Every value a window gives is meant to be the length of a path
+// on the surface, so never below the exact geodesic distance (measured: none on camelhead and
+// fertility, at most 0.07% below at single vertices of CAD plates and pizza); a face
 // keeps the K windows that together give it the lowest values at seven sample points (corners,
 // centroid, edge midpoints). Windows of one source that touch are merged (exact on a plane).
+// Afterwards the values are relaxed along the input's edges (as GSP's vertex relaxation), so no
+// vertex ends farther than its shortest edge path.
 //
 // Measured against GSP and CGAL's exact method in docs/benchmarks.md ("Windows per face");
 // single-threaded, double precision, priority-queue order. Not used by
@@ -27,13 +30,14 @@ struct WindowOptions {
 struct WindowStats {
   std::size_t window_updates = 0;   // windows a face took (new or merged)
   std::size_t faces_reached = 0;
+  std::size_t relaxed = 0;          // vertex values lowered along the input's edges afterwards
 };
 
 class WindowGeodesics {
  public:
   // Prepares the faces (by default the intrinsic Delaunay flip of the input's, as GSP's solver
   // does), their planar frames and the edge rings (non-manifold edges: every other face of the
-  // edge is a neighbour, as in GSP).
+  // edge is a neighbour, as in GSP). The mesh must outlive the object.
   explicit WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay = true);
   ~WindowGeodesics();
   WindowGeodesics(WindowGeodesics&&) noexcept;
