@@ -266,3 +266,41 @@ TEST(GeodesicApp, PointCloudDomain) {
 
 }  // namespace
 }  // namespace gsp::test
+
+namespace gsp::test {
+namespace {
+
+// --method windows: exact on a plane from two sources (distance to the nearer), never below the
+// straight line on fertility, and the options it does not take refused with a usage error.
+TEST(GeodesicApp, MethodWindows) {
+  ScratchDir dir("geodesic");
+  const TriangleMesh plane = grid(30);
+  io::write_mesh((dir / "plane.off").string(), plane);
+  const Index a = 0, b = Index(plane.num_vertices() - 1);
+  const auto r = run(quote(bin(kApp)) + " " + quote((dir / "plane.off").string()) + " --source-vertex " +
+                         std::to_string(a) + "," + std::to_string(b) + " --method windows -o " +
+                         quote((dir / "w.txt").string()),
+                     dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto d = io::read_values_txt((dir / "w.txt").string());
+  ASSERT_EQ(d.size(), plane.num_vertices());
+  for (std::size_t v = 0; v < d.size(); ++v) {
+    const double exact = std::min(distance(plane.positions[v], plane.positions[a]), distance(plane.positions[v], plane.positions[b]));
+    EXPECT_NEAR(d[v], exact, 1e-7 * (1 + exact)) << v;   // the .txt keeps 9 digits
+  }
+  const auto f = run(quote(bin(kApp)) + " " + quote(sample()) + " --source-vertex 12 --method windows -o " +
+                         quote((dir / "f.txt").string()),
+                     dir);
+  ASSERT_EQ(f.exit_code, 0) << f.err;
+  const TriangleMesh m = io::read_mesh(sample()).mesh;
+  const auto w = io::read_values_txt((dir / "f.txt").string());
+  for (std::size_t v = 0; v < w.size(); ++v) EXPECT_GE(w[v], distance(m.positions[v], m.positions[12]) * (1 - 1e-7)) << v;
+  for (const char* bad : {" --source-point 0,0,0", " --source-vertex 1 --max-distance 5", " --source-vertex 1 --separate"})
+    EXPECT_EQ(run(quote(bin(kApp)) + " " + quote(sample()) + bad + " --method windows -o " + quote((dir / "x.txt").string()), dir)
+                  .exit_code,
+              2)
+        << bad;
+}
+
+}  // namespace
+}  // namespace gsp::test

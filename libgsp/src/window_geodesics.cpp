@@ -40,6 +40,7 @@ enum : std::uint8_t { kNoShadow = 0, kBounded = 1, kWholeFace = 2 };
 struct Window {
   V2 s;
   double sigma = 0;
+  Index label = 0;     // which source it comes from
   bool rays = false;   // false: S is a corner of the face and sees all of it
   V2 w[2], u[2];
   std::uint8_t shadow[2] = {kNoShadow, kNoShadow};
@@ -112,7 +113,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
   auto corners = [&] {
     for (V2 x : {a, b}) {
       const double v = value_at(win, x);
-      if (v < kInf) out[n++] = corner_window(x, v);
+      if (v < kInf) out[n] = corner_window(x, v), out[n++].label = win.label;
     }
     return n;
   };
@@ -147,7 +148,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
     if (hidden_by < 0 || win.shadow[hidden_by] == kNoShadow || depth > 0) return corners();
     const V2 w = win.w[hidden_by];
     Window sw;
-    sw.s = w, sw.sigma = win.sigma + norm(w - win.s);
+    sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label;
     if (win.shadow[hidden_by] == kBounded) {
       sw.rays = true;
       sw.w[0] = w + (w - win.s), sw.w[1] = win.u[hidden_by];   // the ray's continuation, W -> U
@@ -156,7 +157,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
     return m > 0 ? m : corners();
   }
   Window nw;
-  nw.s = win.s, nw.sigma = win.sigma, nw.rays = true;
+  nw.s = win.s, nw.sigma = win.sigma, nw.rays = true, nw.label = win.label;
   nw.w[0] = anchor[0], nw.w[1] = anchor[1];
   const V2 ends[2] = {a, b}, cut[2] = {a + lo * ab, a + hi * ab};
   for (int e = 0; e < 2; ++e) {
@@ -203,7 +204,7 @@ int merge(const Window& x, const Window& y, Window* out) {
   const End lo = lx.angle <= ly.angle ? lx : ly, hi = hx.angle >= hy.angle ? hx : hy;
   if (hi.angle - lo.angle >= M_PI - 1e-6) return 0;
   Window m;
-  m.s = s, m.sigma = y.sigma, m.rays = true;
+  m.s = s, m.sigma = y.sigma, m.rays = true, m.label = y.label;
   for (int slot = 0; slot < 2; ++slot) {
     const End& e = slot == 0 ? lo : hi;
     m.w[slot] = e.win->w[e.ray], m.u[slot] = e.win->u[e.ray], m.shadow[slot] = e.win->shadow[e.ray];
@@ -278,10 +279,17 @@ WindowGeodesics& WindowGeodesics::operator=(WindowGeodesics&&) noexcept = defaul
 
 std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const WindowOptions& options,
                                                            WindowStats* stats) const {
+  return distances({source}, options, stats);
+}
+
+std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources, const WindowOptions& options,
+                                               WindowStats* stats, std::vector<Index>* label) const {
   const Impl& mesh = *impl_;
   const auto& frame = mesh.frame;
   const std::size_t nv = mesh.num_vertices, nf = mesh.triangles.size();
-  if (source >= nv) throw std::invalid_argument("source vertex " + std::to_string(source) + " out of range");
+  if (sources.empty()) throw std::invalid_argument("no source vertex");
+  for (Index source : sources)
+    if (source >= nv) throw std::invalid_argument("source vertex " + std::to_string(source) + " out of range");
   const unsigned k = options.windows;
   if (k < 1 || k > 8) throw std::invalid_argument("windows per face: 1 to 8, not " + std::to_string(k));
 
@@ -369,9 +377,14 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
     return ++updates, true;
   };
 
-  for (Index c = mesh.corner_begin[source]; c < mesh.corner_begin[source + 1]; ++c) {
-    const Index corner = mesh.corners[c], f = face_of(corner);
-    if (offer(f, corner_window(frame[f][corner_of(corner)], 0.0))) push(f);
+  for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) {
+    const Index source = sources[k_src];
+    for (Index c = mesh.corner_begin[source]; c < mesh.corner_begin[source + 1]; ++c) {
+      const Index corner = mesh.corners[c], f = face_of(corner);
+      Window w = corner_window(frame[f][corner_of(corner)], 0.0);
+      w.label = Index(k_src);
+      if (offer(f, w)) push(f);
+    }
   }
 
   while (!queue.empty()) {
@@ -420,16 +433,18 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
   }
 
   std::vector<double> dist(nv, kInf);
+  std::vector<Index> from(nv, kInvalidIndex);
   std::size_t reached = 0, relaxed = 0;
   for (Index f = 0; f < nf; ++f) {
     if (count[f] > 0) ++reached;
     for (unsigned w = 0; w < count[f]; ++w)
       for (int c = 0; c < 3; ++c) {
         const Index v = mesh.triangles[f][c];
-        dist[v] = std::min(dist[v], value_at(win[f * k + w], frame[f][c]));
+        const double d = value_at(win[f * k + w], frame[f][c]);
+        if (d < dist[v]) dist[v] = d, from[v] = win[f * k + w].label;
       }
   }
-  dist[source] = 0;
+  for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) dist[sources[k_src]] = 0, from[sources[k_src]] = Index(k_src);
   // Along the input's edges, as GSP's vertex relaxation: a value above the shortest edge path
   // (a window lost where a face kept others, a vertex the windows do not reach across a
   // vertex-only joint) takes that path, which is on the surface too.
@@ -447,12 +462,13 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
         const Triangle& t = in.triangles[face_of(mesh.input_corners[c])];
         for (Index x : t) {
           const double nd = d + distance(in.positions[v], in.positions[x]);
-          if (nd < dist[x] * (1 - 1e-12)) dist[x] = nd, heap.emplace(nd, x), ++relaxed;
+          if (nd < dist[x] * (1 - 1e-12)) dist[x] = nd, from[x] = from[v], heap.emplace(nd, x), ++relaxed;
         }
       }
     }
   }
   if (stats) stats->window_updates = updates, stats->faces_reached = reached, stats->relaxed = relaxed;
+  if (label) *label = std::move(from);
   return dist;
 }
 

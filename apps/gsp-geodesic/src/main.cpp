@@ -13,6 +13,7 @@
 #include <gsp/batch.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/dijkstra.hpp>
+#include <gsp/window_geodesics.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/render/render.hpp>
@@ -27,6 +28,31 @@ namespace {
 
 using namespace gsp;
 using namespace gsp::geodesic_app;
+
+// --method windows: gsp::WindowGeodesics (three windows per face) from vertex sources.
+GeodesicResult run_windows(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in,
+                           const ResolvedSources& src, double max_distance) {
+  if (std::isfinite(max_distance)) throw cli::UsageError("--method windows: --max-distance is not supported");
+  if (o.separate || o.matrix) throw cli::UsageError("--method windows: one field only (no --separate or --matrix)");
+  if (o.input_faces) throw cli::UsageError("--method windows: --input-faces is not supported");
+  std::vector<Index> vertices;
+  for (const Source& s : src.sources) {
+    if (!s.is_vertex() || s.offset != 0)
+      throw cli::UsageError("--method windows takes vertex sources only (--source-vertex)");
+    vertices.push_back(s.element);
+  }
+  WindowOptions wo;
+  wo.windows = 3;
+  ctx.settings()["windows_per_face"] = wo.windows;
+  WindowGeodesics solver = ctx.timer().time("build", [&] { return WindowGeodesics(in.mesh); });
+  GeodesicResult r;
+  WindowStats stats;
+  r.vertex_distance = ctx.timer().time("compute", [&] { return solver.distances(vertices, wo, &stats, &r.vertex_source); });
+  ctx.operations()["window_updates"] = stats.window_updates;
+  r.stats.relaxed_vertices = stats.relaxed;   // report_result writes the stats
+  r.stats.faces_reached = stats.faces_reached;
+  return r;
+}
 
 void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces) {
   report_distances(ctx, r.vertex_distance);
@@ -122,7 +148,9 @@ void run(cli::Context& ctx, const Options& o) {
   if (!o.source_points.empty()) ctx.stats()["result"]["max_snap_distance"] = src.max_snap_distance;
 
   GeodesicResult result;
-  if (o.method == "dijkstra") {
+  if (o.method == "windows") {
+    result = run_windows(ctx, o, in, src, max_distance);
+  } else if (o.method == "dijkstra") {
     DijkstraSolver solver = ctx.timer().time("build", [&] { return DijkstraSolver(in.mesh); });
     result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, max_distance); });
   } else {

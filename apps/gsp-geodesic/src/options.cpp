@@ -36,9 +36,11 @@ void add_options(CLI::App& app, Options& o) {
                  "stop at this distance (model units); farther vertices are unreached")
       ->type_name("D");
   app.add_option("--method", o.method,
-                 "gsp (default), dijkstra (edge graph, for comparison), or graph-gsp (point clouds: virtual "
-                 "sources over the k-NN links instead of GSP on the local triangles)")
-      ->check(CLI::IsMember({"gsp", "dijkstra", "graph-gsp"}));
+                 "gsp (default), windows (three windows per face instead of one virtual source: 3-6x as "
+                 "accurate, 26-42x slower; vertex sources; docs/benchmarks.md), dijkstra (edge graph, for "
+                 "comparison), or graph-gsp (point clouds: virtual sources over the k-NN links instead of GSP "
+                 "on the local triangles)")
+      ->check(CLI::IsMember({"gsp", "windows", "dijkstra", "graph-gsp"}));
   app.add_option("--strategy", o.strategy,
                  "queue strategy: speed-limiter (default), speed-limiter-postpone, static-postpone, dynamic-postpone, "
                  "hybrid-postpone, bfs, priority-queue");

@@ -13,8 +13,8 @@
 // vertex ends farther than its shortest edge path.
 //
 // Measured against GSP and CGAL's exact method in docs/benchmarks.md ("Windows per face");
-// single-threaded, double precision, priority-queue order. Not used by
-// the solver or the apps: gsp-bench's `gsp-windows` method runs it.
+// single-threaded, double precision, priority-queue order. Not used by GSP's solver:
+// gsp-geodesic --method windows and gsp-bench's `gsp-windows` / `gsp-windows3` run it.
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
@@ -47,6 +47,12 @@ class WindowGeodesics {
   // a vertex out of range or a window count outside 1..8.
   std::vector<double> distances_from_vertex(Index source, const WindowOptions& options = {},
                                             WindowStats* stats = nullptr) const;
+
+  // Distances from the nearest of several source vertices, and (label, when given) the index
+  // in `sources` of that nearest one (kInvalidIndex where unreached). The same errors, and for
+  // an empty list.
+  std::vector<double> distances(const std::vector<Index>& sources, const WindowOptions& options = {},
+                                WindowStats* stats = nullptr, std::vector<Index>* label = nullptr) const;
 
  private:
   struct Impl;
