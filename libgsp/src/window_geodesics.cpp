@@ -91,11 +91,11 @@ double value_at(const Window& win, V2 p) {
 }
 
 // The shadow wedge at ray r's vertex for the next face, whose entry edge has its shadowed part
-// from the end X to the ray's crossing Y.
-std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x, V2 y) {
+// from the end X to the ray's crossing (which lies on the wedge's other side, the ray's
+// continuation).
+std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x) {
   if (win.shadow[r] == kNoShadow) return {kNoShadow, {}};
   if (win.shadow[r] == kWholeFace) return {kBounded, x};
-  (void)y;   // Y lies on the wedge's other side, the ray's continuation
   const V2 w = win.w[r], u = win.u[r], d = w - win.s;
   const double side = cross(d, u - w);
   if (!(std::abs(side) > 1e-12 * norm(d) * norm(u - w))) return {kNoShadow, {}};   // no width
@@ -159,12 +159,12 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
   Window nw;
   nw.s = win.s, nw.sigma = win.sigma, nw.rays = true, nw.label = win.label;
   nw.w[0] = anchor[0], nw.w[1] = anchor[1];
-  const V2 ends[2] = {a, b}, cut[2] = {a + lo * ab, a + hi * ab};
+  const V2 ends[2] = {a, b};
   for (int e = 0; e < 2; ++e) {
     if (from_ray[e] < 0) {
       nw.shadow[e] = kWholeFace;
     } else {
-      const auto [kind, u] = clip_shadow(win, from_ray[e], ends[e], cut[e]);
+      const auto [kind, u] = clip_shadow(win, from_ray[e], ends[e]);
       nw.shadow[e] = kind, nw.u[e] = u;
     }
   }
