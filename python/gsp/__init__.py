@@ -27,6 +27,7 @@ from ._gsp import (
     read_points,
     remesh,
     sample,
+    window_distance,
     write_mesh,
 )
 from . import metric
@@ -34,7 +35,7 @@ from . import metric
 __all__ = [
     "Cvt", "Error", "GeodesicSolver", "NoPathError", "Path", "PointCloudSolver", "RemeshWarning", "Samples", "SurfacePoint",
     "cvt", "geodesic_distance", "line_distance", "metric", "read_mesh", "read_points", "remesh", "sample",
-    "write_mesh", "__version__",
+    "window_distance", "write_mesh", "__version__",
 ]
 
 _SOLVER_KEYWORDS = ("intrinsic_delaunay", "metric", "optimize_layout")

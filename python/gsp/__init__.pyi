@@ -1,6 +1,6 @@
 # Type stubs of the gsp package (the compiled gsp._gsp plus gsp/__init__.py).
 import os
-from typing import Callable, Optional, Sequence, Tuple, Union, overload
+from typing import Callable, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -63,6 +63,12 @@ class GeodesicSolver:
               precision: str = ...) -> list[Path]: ...
 
 def geodesic_distance(V: ArrayLike, F: ArrayLike, sources: Points, **options: object) -> FloatArray: ...
+@overload
+def window_distance(V: ArrayLike, F: ArrayLike, sources: Union[int, Sequence[int], ArrayLike], *,
+                    windows: int = ..., labels: Literal[False] = ...) -> FloatArray: ...
+@overload
+def window_distance(V: ArrayLike, F: ArrayLike, sources: Union[int, Sequence[int], ArrayLike], *,
+                    windows: int = ..., labels: Literal[True]) -> Tuple[FloatArray, IntArray]: ...
 def read_mesh(path: PathLike, weld: Optional[bool] = ..., *, weld_tolerance: float = ...) -> Tuple[FloatArray, IntArray]: ...
 @overload
 def read_points(path: PathLike) -> FloatArray: ...

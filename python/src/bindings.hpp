@@ -16,6 +16,7 @@ void bind_metric(py::module_& m);
 void bind_pointcloud(py::module_& m);
 void bind_sampling(py::module_& m);
 void bind_cvt(py::module_& m);
+void bind_windows(py::module_& m);
 
 // A str or os.PathLike as a file name.
 std::string path_string(const py::object& path);

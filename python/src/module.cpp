@@ -16,6 +16,7 @@ PYBIND11_MODULE(_gsp, m) {
   bind_pointcloud(m);
   bind_sampling(m);
   bind_cvt(m);
+  bind_windows(m);
 #ifdef GSP_VERSION
   m.attr("__version__") = GSP_VERSION;
 #endif

@@ -187,3 +187,26 @@ def test_curvature_metric_runs_on_a_scan(fertility):
     assert np.all(np.isfinite(d))
     assert np.mean(d < iso * 0.99) < 0.001 and np.all(d >= iso * 0.97)
     assert np.mean(d) > np.mean(iso) * 1.05
+
+
+def test_window_distance_on_plane_and_against_exact(plane, tmp_path):
+    V, F = plane
+    d, label = gsp.window_distance(V, F, [0, len(V) - 1], labels=True)
+    e0, e1 = np.linalg.norm(V - V[0], axis=1), np.linalg.norm(V - V[-1], axis=1)
+    np.testing.assert_allclose(d, np.minimum(e0, e1), rtol=1e-9, atol=1e-12)
+    assert np.all(label[e0 < e1 - 1e-9] == 0) and np.all(label[e1 < e0 - 1e-9] == 1)
+    path = shared_mesh("camelhead.off")
+    V, F = gsp.read_mesh(path)
+    exact = exact_distances(path, 7, tmp_path)
+    w = gsp.window_distance(V, F, 7)
+    g = gsp.GeodesicSolver(V, F).distance(7)
+    mask = exact > 0
+    rel_w = (w[mask] - exact[mask]) / exact[mask]
+    rel_g = np.abs(g[mask] - exact[mask]) / exact[mask]
+    # Paths on the surface: never below the exact distance; more accurate than GSP here.
+    assert rel_w.min() > -1e-6, rel_w.min()
+    assert np.abs(rel_w).mean() < rel_g.mean(), (np.abs(rel_w).mean(), rel_g.mean())
+    with pytest.raises(ValueError):
+        gsp.window_distance(V, F, len(V))
+    with pytest.raises(ValueError):
+        gsp.window_distance(V, F, 0, windows=0)
