@@ -37,7 +37,7 @@ void add_options(CLI::App& app, Options& o) {
       ->type_name("D");
   app.add_option("--method", o.method,
                  "gsp (default), windows (three windows per face instead of one virtual source: 3-6x as "
-                 "accurate, 26-42x slower; vertex sources; docs/benchmarks.md), dijkstra (edge graph, for "
+                 "accurate, 14-22x slower; vertex sources; docs/benchmarks.md), dijkstra (edge graph, for "
                  "comparison), or graph-gsp (point clouds: virtual sources over the k-NN links instead of GSP "
                  "on the local triangles)")
       ->check(CLI::IsMember({"gsp", "windows", "dijkstra", "graph-gsp"}));
