@@ -1,9 +1,11 @@
 #include <gsp/window_geodesics.hpp>
 
 #include "intrinsic_delaunay.hpp"
+#include "vertex_relaxation.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/intrinsic/edge_lengths.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
 
 #include <algorithm>
 #include <array>
@@ -80,9 +82,9 @@ bool has_width(const Window& win) {
   return std::abs(ray_side(win)) > 1e-12 * norm(win.w[0] - win.s) * norm(win.w[1] - win.s);
 }
 
+// Windows with rays have width (step() makes no other), so the ray tests below are sound.
 double value_at(const Window& win, V2 p) {
   if (win.rays) {
-    if (!has_width(win)) return kInf;
     const double o = ray_side(win);
     for (int r = 0; r < 2; ++r)
       if (beyond_ray(win, r, p, o))
@@ -119,7 +121,6 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
     return n;
   };
   if (!(cross(ab, win.s - a) * inside < 0)) return corners();   // S on T's side: bend at A or B
-  if (win.rays && !has_width(win)) return 0;
   double lo = 0, hi = 1;
   V2 anchor[2] = {a, b};
   int from_ray[2] = {-1, -1}, hidden_by = -1;
@@ -169,7 +170,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
       nw.shadow[e] = kind, nw.u[e] = u;
     }
   }
-  out[n++] = nw;
+  if (has_width(nw)) out[n++] = nw;   // a window of no width sees nothing
   return n;
 }
 
@@ -218,8 +219,12 @@ int merge(const Window& x, const Window& y, Window* out) {
 
 struct WindowGeodesics::Impl {
   std::size_t num_vertices = 0;
-  const TriangleMesh* input = nullptr;    // for the relaxation along its edges (caller keeps it)
-  std::vector<Index> input_corner_begin, input_corners;   // vertex -> input corners, CSR
+  // The input's edges for the final relaxation (vertex_relaxation.hpp): its triangles (the
+  // caller keeps the mesh), their halfedge lengths, skipped faces and vertex -> corner lists.
+  const std::vector<Triangle>* input_triangles = nullptr;
+  std::vector<double> input_length;
+  std::vector<bool> skipped;
+  std::vector<Index> input_corner_begin, input_corners;
   std::vector<Triangle> triangles;        // the propagation's faces (intrinsic Delaunay or input)
   std::vector<Index> ring;                // per halfedge: the next face's halfedge on its edge
   std::vector<std::array<V2, 3>> frame;   // per face: its corners in its own plane
@@ -230,14 +235,18 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaun
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.num_vertices = mesh.positions.size();
-  m.input = &mesh;
-  const std::vector<bool> skipped = intrinsic::skipped_faces(mesh);
+  m.input_triangles = &mesh.triangles;
+  m.skipped = intrinsic::skipped_faces(mesh);
+  const std::vector<bool>& skipped = m.skipped;
   std::vector<double> length = intrinsic::halfedge_lengths(mesh);
   intrinsic::snap_zero_lengths(length);
+  m.input_length = length;
   {
-    const Connectivity conn = build_connectivity(mesh);
+    Connectivity conn = build_connectivity(mesh);
     m.ring.resize(conn.num_halfedges());
     for (Index h = 0; h < m.ring.size(); ++h) m.ring[h] = intrinsic::next_crossed(conn, skipped, length, h);
+    m.input_corner_begin = std::move(conn.vertex_corner_begin);
+    m.input_corners = std::move(conn.vertex_corners);
   }
   m.triangles = mesh.triangles;
   if (intrinsic_delaunay) {
@@ -254,24 +263,21 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaun
   }
   m.frame.resize(m.triangles.size());
   for (std::size_t f = 0; f < m.triangles.size(); ++f) {
-    const double l0 = length[3 * f], l1 = length[3 * f + 1], l2 = length[3 * f + 2];
-    const double x = l0 > 0 ? (l0 * l0 + l2 * l2 - l1 * l1) / (2 * l0) : 0.0;
-    m.frame[f] = {V2{0, 0}, V2{l0, 0}, V2{x, std::sqrt(std::max(l2 * l2 - x * x, 0.0))}};
+    // the core's canonical frame (face_frame.hpp): corner 0 at the origin, corner 1 on +x
+    const intrinsic::EdgeView<double> v = intrinsic::edge_view(&length[3 * f], 0);
+    m.frame[f] = {V2{0, 0}, V2{v.e1, 0}, V2{v.px, v.py}};
   }
-  auto corners_of = [&](const std::vector<Triangle>& tris, std::vector<Index>& begin, std::vector<Index>& corners) {
-    begin.assign(m.num_vertices + 1, 0);
-    for (std::size_t f = 0; f < tris.size(); ++f)
-      if (!skipped[f])
-        for (Index v : tris[f]) ++begin[v + 1];
-    for (std::size_t v = 0; v < m.num_vertices; ++v) begin[v + 1] += begin[v];
-    corners.resize(begin.back());
-    std::vector<Index> fill(begin.begin(), begin.end() - 1);
-    for (std::size_t f = 0; f < tris.size(); ++f)
-      if (!skipped[f])
-        for (Index i = 0; i < 3; ++i) corners[fill[tris[f][i]]++] = Index(3 * f + i);
-  };
-  corners_of(m.triangles, m.corner_begin, m.corners);
-  corners_of(mesh.triangles, m.input_corner_begin, m.input_corners);
+  // vertex -> corners of the propagation's faces (the flips moved them off the input's)
+  m.corner_begin.assign(m.num_vertices + 1, 0);
+  for (std::size_t f = 0; f < m.triangles.size(); ++f)
+    if (!skipped[f])
+      for (Index v : m.triangles[f]) ++m.corner_begin[v + 1];
+  for (std::size_t v = 0; v < m.num_vertices; ++v) m.corner_begin[v + 1] += m.corner_begin[v];
+  m.corners.resize(m.corner_begin.back());
+  std::vector<Index> fill(m.corner_begin.begin(), m.corner_begin.end() - 1);
+  for (std::size_t f = 0; f < m.triangles.size(); ++f)
+    if (!skipped[f])
+      for (Index i = 0; i < 3; ++i) m.corners[fill[m.triangles[f][i]]++] = Index(3 * f + i);
 }
 
 WindowGeodesics::~WindowGeodesics() = default;
@@ -446,28 +452,12 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
       }
   }
   for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) dist[sources[k_src]] = 0, from[sources[k_src]] = Index(k_src);
-  // Along the input's edges, as GSP's vertex relaxation: a value above the shortest edge path
-  // (a window lost where a face kept others, a vertex the windows do not reach across a
-  // vertex-only joint) takes that path, which is on the surface too.
-  {
-    const TriangleMesh& in = *mesh.input;
-    using Item = std::pair<double, Index>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
-    for (Index v = 0; v < nv; ++v)
-      if (dist[v] < kInf) heap.emplace(dist[v], v);
-    while (!heap.empty()) {
-      const auto [d, v] = heap.top();
-      heap.pop();
-      if (d > dist[v]) continue;
-      for (Index c = mesh.input_corner_begin[v]; c < mesh.input_corner_begin[v + 1]; ++c) {
-        const Triangle& t = in.triangles[face_of(mesh.input_corners[c])];
-        for (Index x : t) {
-          const double nd = d + distance(in.positions[v], in.positions[x]);
-          if (nd < dist[x] * (1 - 1e-12)) dist[x] = nd, from[x] = from[v], heap.emplace(nd, x), ++relaxed;
-        }
-      }
-    }
-  }
+  // Along the input's edges, with GSP's own relaxation (vertex_relaxation.hpp): a value above
+  // the shortest edge path (a window lost where a face kept others, a vertex the windows do
+  // not reach across a vertex-only joint) takes that path, which is on the surface too.
+  detail::relax_along_edges<double>(*mesh.input_triangles, mesh.input_length, 1.0, mesh.skipped,
+                                    mesh.input_corner_begin, mesh.input_corners, nullptr, kInf, 0.0, dist, from,
+                                    relaxed);
   if (stats) stats->window_updates = updates, stats->faces_reached = reached, stats->relaxed = relaxed;
   if (label) *label = std::move(from);
   return dist;
