@@ -1,6 +1,7 @@
 #include <gsp/window_geodesics.hpp>
 
 #include "intrinsic_delaunay.hpp"
+#include "window_geodesics_impl.hpp"
 #include "vertex_relaxation.hpp"
 
 #include <gsp/connectivity.hpp>
@@ -20,227 +21,30 @@
 
 namespace gsp {
 
+using namespace detail::windows;
+
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kSamples = 7;
-
-struct V2 {
-  double x = 0, y = 0;
-};
-V2 operator+(V2 a, V2 b) { return {a.x + b.x, a.y + b.y}; }
-V2 operator-(V2 a, V2 b) { return {a.x - b.x, a.y - b.y}; }
-V2 operator*(double t, V2 a) { return {t * a.x, t * a.y}; }
-double cross(V2 a, V2 b) { return a.x * b.y - a.y * b.x; }
-double dot(V2 a, V2 b) { return a.x * b.x + a.y * b.y; }
-// sqrt, not std::hypot: hypot guards against overflow at 1e154 and took 42% of a query here.
-double norm(V2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-
-// Shadow kinds beyond a ray: none, a wedge bounded by W -> U, or all of the face (W is one of
-// its corners).
-enum : std::uint8_t { kNoShadow = 0, kBounded = 1, kWholeFace = 2 };
-
-struct Window {
-  V2 s;
-  double sigma = 0;
-  Index label = 0;     // which source it comes from
-  bool rays = false;   // false: S is a corner of the face and sees all of it
-  V2 w[2], u[2];
-  std::uint8_t shadow[2] = {kNoShadow, kNoShadow};
-};
-
-Window corner_window(V2 corner, double value) {
-  Window w;
-  w.s = corner, w.sigma = value;
-  return w;
-}
-
-double ray_side(const Window& win) { return cross(win.w[0] - win.s, win.w[1] - win.s); }
-
-bool beyond_ray(const Window& win, int r, V2 p, double o) {
-  const double c = cross(win.w[r] - win.s, p - win.s) * o;
-  const double tol = 1e-12 * std::abs(o) * (1 + norm(p - win.s));
-  return r == 0 ? c < -tol : c > tol;
-}
-
-// Whether p (beyond ray r) lies in the shadow wedge at W: between the ray's continuation past
-// W and the ray W -> U. A wedge of no width (U on the continuation: collinear vertices, as on
-// CAD grids) holds nothing; its cross products are rounding noise of either sign.
-bool in_shadow(const Window& win, int r, V2 p) {
-  if (win.shadow[r] == kNoShadow) return false;
-  if (win.shadow[r] == kWholeFace) return true;
-  const V2 w = win.w[r], u = win.u[r], d = w - win.s;
-  const double side = cross(d, u - w);
-  if (!(std::abs(side) > 1e-12 * norm(d) * norm(u - w))) return false;
-  const double sgn = side > 0 ? 1.0 : -1.0, tol = 1e-12 * norm(p - w);
-  return sgn * cross(d, p - w) >= -tol * norm(d) && sgn * cross(u - w, p - w) <= tol * norm(u - w);
-}
-
-// Whether the window's two rays bound a wedge of some width (collinear vertices can make them
-// coincide; such a window sees nothing).
-bool has_width(const Window& win) {
-  return std::abs(ray_side(win)) > 1e-12 * norm(win.w[0] - win.s) * norm(win.w[1] - win.s);
-}
-
-// Windows with rays have width (step() makes no other), so the ray tests below are sound.
-double value_at(const Window& win, V2 p) {
-  if (win.rays) {
-    const double o = ray_side(win);
-    for (int r = 0; r < 2; ++r)
-      if (beyond_ray(win, r, p, o))
-        return in_shadow(win, r, p) ? norm(p - win.w[r]) + norm(win.w[r] - win.s) + win.sigma : kInf;
-  }
-  return norm(p - win.s) + win.sigma;
-}
-
-// The shadow wedge at ray r's vertex for the next face, whose entry edge has its shadowed part
-// from the end X to the ray's crossing (which lies on the wedge's other side, the ray's
-// continuation).
-std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x) {
-  if (win.shadow[r] == kNoShadow) return {kNoShadow, {}};
-  if (win.shadow[r] == kWholeFace) return {kBounded, x};
-  const V2 w = win.w[r], u = win.u[r], d = w - win.s;
-  const double side = cross(d, u - w);
-  if (!(std::abs(side) > 1e-12 * norm(d) * norm(u - w))) return {kNoShadow, {}};   // no width
-  const double sgn = side > 0 ? 1.0 : -1.0;
-  if (sgn * cross(u - w, x - w) <= 0) return {kBounded, x};   // X inside: bounded by W -> X now
-  return {kBounded, u};
-}
-
-// The window `win` (in T's frame) through T's edge A B into T (P its third corner): at most
-// two new windows.
-int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0) {
-  const V2 ab = b - a;
-  const double inside = cross(ab, p - a);
-  int n = 0;
-  auto corners = [&] {
-    for (V2 x : {a, b}) {
-      const double v = value_at(win, x);
-      if (v < kInf) out[n] = corner_window(x, v), out[n++].label = win.label;
-    }
-    return n;
-  };
-  if (!(cross(ab, win.s - a) * inside < 0)) return corners();   // S on T's side: bend at A or B
-  double lo = 0, hi = 1;
-  V2 anchor[2] = {a, b};
-  int from_ray[2] = {-1, -1}, hidden_by = -1;
-  if (win.rays) {
-    const double o = ray_side(win);
-    for (int r = 0; r < 2; ++r) {
-      const double sgn = r == 0 ? 1 : -1;
-      const V2 wv = win.w[r];
-      const double ca = sgn * cross(wv - win.s, a - win.s) * o, cb = sgn * cross(wv - win.s, b - win.s) * o;
-      if (ca >= 0 && cb >= 0) continue;
-      if (ca < 0 && cb < 0) {
-        lo = 1, hi = 0, hidden_by = r;
-        break;
-      }
-      const double t = ca / (ca - cb);
-      if (ca < 0) {
-        if (t > lo) lo = t, anchor[0] = wv, from_ray[0] = r;
-      } else if (t < hi) {
-        hi = t, anchor[1] = wv, from_ray[1] = r;
-      }
-    }
-  }
-  if (!(hi - lo > 1e-9)) {
-    // S sees nothing of AB. Behind the ray that hides it, its vertex W is the source, seen
-    // through its shadow wedge (W a corner of the sending face sees all of AB); without a
-    // wedge there, the bends at A and B.
-    if (hidden_by < 0 || win.shadow[hidden_by] == kNoShadow || depth > 0) return corners();
-    const V2 w = win.w[hidden_by];
-    Window sw;
-    sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label;
-    if (win.shadow[hidden_by] == kBounded) {
-      sw.rays = true;
-      sw.w[0] = w + (w - win.s), sw.w[1] = win.u[hidden_by];   // the ray's continuation, W -> U
-    }
-    const int m = step(sw, a, b, p, out, depth + 1);
-    return m > 0 ? m : corners();
-  }
-  Window nw;
-  nw.s = win.s, nw.sigma = win.sigma, nw.rays = true, nw.label = win.label;
-  nw.w[0] = anchor[0], nw.w[1] = anchor[1];
-  const V2 ends[2] = {a, b};
-  for (int e = 0; e < 2; ++e) {
-    if (from_ray[e] < 0) {
-      nw.shadow[e] = kWholeFace;
-    } else {
-      const auto [kind, u] = clip_shadow(win, from_ray[e], ends[e]);
-      nw.shadow[e] = kind, nw.u[e] = u;
-    }
-  }
-  if (has_width(nw)) out[n++] = nw;   // a window of no width sees nothing
-  return n;
-}
-
-bool same_source(const Window& x, const Window& y) {
-  return std::abs(x.sigma - y.sigma) <= 1e-9 * (1 + y.sigma) &&
-         norm(x.s - y.s) <= 1e-9 * (1 + std::max(std::abs(y.s.x), std::abs(y.s.y)));
-}
-
-// The union of two windows of one source whose wedges touch or overlap: 1 (x already holds
-// it), 2 (merged into *out), 0 (no union).
-int merge(const Window& x, const Window& y, Window* out) {
-  if (!same_source(x, y)) return 0;
-  if (!x.rays) return 1;
-  if (!y.rays) return *out = y, 2;
-  const V2 s = y.s;
-  V2 ref = 0.5 * (x.w[0] + x.w[1]) - s;
-  const double len = norm(ref);
-  if (len > 0) ref = (1 / len) * ref;
-  auto angle = [&](V2 v) { return std::atan2(cross(ref, v - s), dot(ref, v - s)); };
-  struct End {
-    double angle;
-    const Window* win;
-    int ray;
-  };
-  auto ends = [&](const Window& w) {
-    End e0{angle(w.w[0]), &w, 0}, e1{angle(w.w[1]), &w, 1};
-    return e0.angle <= e1.angle ? std::pair{e0, e1} : std::pair{e1, e0};
-  };
-  const auto [lx, hx] = ends(x);
-  const auto [ly, hy] = ends(y);
-  constexpr double tol = 1e-9;
-  if (ly.angle > hx.angle + tol || lx.angle > hy.angle + tol) return 0;
-  const End lo = lx.angle <= ly.angle ? lx : ly, hi = hx.angle >= hy.angle ? hx : hy;
-  if (hi.angle - lo.angle >= M_PI - 1e-6) return 0;
-  Window m;
-  m.s = s, m.sigma = y.sigma, m.rays = true, m.label = y.label;
-  for (int slot = 0; slot < 2; ++slot) {
-    const End& e = slot == 0 ? lo : hi;
-    m.w[slot] = e.win->w[e.ray], m.u[slot] = e.win->u[e.ray], m.shadow[slot] = e.win->shadow[e.ray];
-  }
-  *out = m;
-  return 2;
-}
+// Up to this many targets the propagation is goal-directed (the heuristic costs one distance
+// per target and face); beyond, it only stops early.
+constexpr std::size_t kGoalTargets = 16;
 
 }  // namespace
-
-struct WindowGeodesics::Impl {
-  std::size_t num_vertices = 0;
-  // The input's edges for the final relaxation (vertex_relaxation.hpp): its triangles (the
-  // caller keeps the mesh), their halfedge lengths, skipped faces and vertex -> corner lists.
-  const std::vector<Triangle>* input_triangles = nullptr;
-  std::vector<double> input_length;
-  std::vector<bool> skipped;
-  std::vector<Index> input_corner_begin, input_corners;
-  std::vector<Triangle> triangles;        // the propagation's faces (intrinsic Delaunay or input)
-  std::vector<Index> ring;                // per halfedge: the next face's halfedge on its edge
-  std::vector<std::array<V2, 3>> frame;   // per face: its corners in its own plane
-  std::vector<Index> corner_begin, corners;   // vertex -> corners 3 f + i, CSR
-};
 
 WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.num_vertices = mesh.positions.size();
+  m.positions = &mesh.positions;
+  m.intrinsic = intrinsic_delaunay;
   m.input_triangles = &mesh.triangles;
   m.skipped = intrinsic::skipped_faces(mesh);
   const std::vector<bool>& skipped = m.skipped;
   std::vector<double> length = intrinsic::halfedge_lengths(mesh);
   intrinsic::snap_zero_lengths(length);
   m.input_length = length;
+  m.mean_edge = intrinsic::mean_edge_length(length, skipped);
   {
     Connectivity conn = build_connectivity(mesh);
     m.ring.resize(conn.num_halfedges());
@@ -289,19 +93,51 @@ std::vector<double> WindowGeodesics::distances_from_vertex(Index source, const W
   return distances({source}, options, stats);
 }
 
+bool WindowGeodesics::on_input_faces() const { return !impl_->intrinsic; }
+
 std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources, const WindowOptions& options,
                                                WindowStats* stats, std::vector<Index>* label) const {
+  std::vector<Source> points;
+  points.reserve(sources.size());
+  for (Index v : sources) points.push_back(Source::at_vertex(v));
+  WindowField f = field(points, options, stats);
+  if (label) *label = std::move(f.vertex_source);
+  return std::move(f.vertex_distance);
+}
+
+WindowField WindowGeodesics::field(const std::vector<Source>& sources, const WindowOptions& options,
+                                   WindowStats* stats) const {
   const Impl& mesh = *impl_;
   const auto& frame = mesh.frame;
   const std::size_t nv = mesh.num_vertices, nf = mesh.triangles.size();
   if (sources.empty()) throw std::invalid_argument("no source vertex");
-  for (Index source : sources)
-    if (source >= nv) throw std::invalid_argument("source vertex " + std::to_string(source) + " out of range");
+  for (const Source& source : sources) {
+    if (source.offset != 0) throw std::invalid_argument("window propagation: sources with an offset are not supported");
+    if (source.kind == Source::Kind::vertex) {
+      if (source.element >= nv) throw std::invalid_argument("source vertex " + std::to_string(source.element) + " out of range");
+      continue;
+    }
+    if (mesh.intrinsic) throw std::invalid_argument("window propagation on intrinsic faces: vertex sources only");
+    if (source.element >= nf || mesh.skipped[source.element])
+      throw std::invalid_argument("source face " + std::to_string(source.element) + " out of range or degenerate");
+    for (double b : source.barycentric)
+      if (!(b >= 0) || !std::isfinite(b)) throw std::invalid_argument("source barycentric weights must be >= 0");
+  }
+  for (Index t : options.targets)
+    if (t >= nv) throw std::invalid_argument("target vertex " + std::to_string(t) + " out of range");
   const unsigned k = options.windows;
   if (k < 1 || k > 8) throw std::invalid_argument("windows per face: 1 to 8, not " + std::to_string(k));
 
-  std::vector<Window> win(nf * k);
-  std::vector<std::uint8_t> count(nf, 0);
+  WindowField result;
+  result.data_ = std::make_unique<WindowField::Data>();
+  WindowField::Data& data = *result.data_;
+  data.mesh = &mesh, data.k = k;
+  // Windows only for the faces reached (a path's propagation stops early): a block of k per face.
+  data.block.assign(nf, kInvalidIndex);
+  data.count.assign(nf, 0);
+  std::vector<Window>& win = data.win;
+  std::vector<Index>& block = data.block;
+  std::vector<std::uint8_t>& count = data.count;
   std::vector<std::uint32_t> stamp(nf, 0);
   auto samples = [&](Index f) {
     const auto& c = frame[f];
@@ -318,27 +154,49 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
     Values m;
     m.fill(kInf);
     for (unsigned i = 0; i < count[f]; ++i) {
-      const Values v = values(win[f * k + i], pts);
+      const Values v = values(win[block[f] * k + i], pts);
       for (int j = 0; j < kSamples; ++j) m[j] = std::min(m[j], v[j]);
     }
     return m;
   };
-  // Per face: the least value over its windows at each sample, kept with the windows.
-  std::vector<Values> least(nf);
-  for (Values& v : least) v.fill(kInf);
+  // Per block: the least value over its face's windows at each sample, kept with the windows.
+  std::vector<Values> least;
   using Entry = std::tuple<double, Index, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  // With a few targets the order is A*'s: a face's key plus a lower bound of the distance from
+  // any of its points to the nearest target (the straight line from its first corner, less
+  // its longest edge: a point of the face is no farther than that from the corner).
+  const bool goal_directed = !options.targets.empty() && options.targets.size() <= kGoalTargets;
+  auto heuristic = [&](Index f) {
+    if (!goal_directed) return 0.0;
+    const auto& c = frame[f];
+    const double longest = std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])});
+    const Vec3 x = (*mesh.positions)[mesh.triangles[f][0]];
+    double h = kInf;
+    for (Index t : options.targets) h = std::min(h, gsp::distance(x, (*mesh.positions)[t]));
+    return std::max(0.0, h - longest);
+  };
   auto push = [&](Index f) {
-    const Values& m = least[f];
-    queue.emplace(*std::min_element(m.begin(), m.end()), f, ++stamp[f]);
+    const Values& m = least[block[f]];
+    queue.emplace(*std::min_element(m.begin(), m.end()) + heuristic(f), f, ++stamp[f]);
   };
   std::size_t updates = 0;
 
   // Offers window w to face g; true when the face changed.
   auto offer = [&](Index g, const Window& w) {
     const auto pts = samples(g);
-    Window* slots = &win[g * k];
-    Values& cur = least[g];
+    if (block[g] == kInvalidIndex) {
+      const Values first = values(w, pts);
+      if (std::none_of(first.begin(), first.end(), [](double x) { return x < kInf; })) return false;
+      block[g] = Index(least.size());
+      least.push_back(first);
+      win.resize(win.size() + k);
+      win[block[g] * k] = w;
+      count[g] = 1;
+      return ++updates, true;
+    }
+    Window* slots = &win[block[g] * k];
+    Values& cur = least[block[g]];
     for (unsigned i = 0; i < count[g]; ++i) {
       Window merged;
       const int m = merge(slots[i], w, &merged);
@@ -385,8 +243,19 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
   };
 
   for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) {
-    const Index source = sources[k_src];
-    for (Index c = mesh.corner_begin[source]; c < mesh.corner_begin[source + 1]; ++c) {
+    const Source& source = sources[k_src];
+    if (source.kind != Source::Kind::vertex) {
+      // A point of a face sees all of it, as a corner does.
+      const auto& c = frame[source.element];
+      const auto& b = source.barycentric;
+      const double sum = b[0] + b[1] + b[2];
+      if (!(sum > 0)) throw std::invalid_argument("source barycentric weights sum to 0");
+      Window w = corner_window((b[0] / sum) * c[0] + (b[1] / sum) * c[1] + (b[2] / sum) * c[2], 0.0);
+      w.label = Index(k_src);
+      if (offer(source.element, w)) push(source.element);
+      continue;
+    }
+    for (Index c = mesh.corner_begin[source.element]; c < mesh.corner_begin[source.element + 1]; ++c) {
       const Index corner = mesh.corners[c], f = face_of(corner);
       Window w = corner_window(frame[f][corner_of(corner)], 0.0);
       w.label = Index(k_src);
@@ -394,10 +263,28 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
     }
   }
 
+  // With targets: their least value over the samples at their corners (+inf until reached).
+  auto targets_bound = [&] {
+    double bound = 0;
+    for (Index t : options.targets) {
+      double d = kInf;
+      for (Index c = mesh.corner_begin[t]; c < mesh.corner_begin[t + 1]; ++c)
+        if (const Index b = block[face_of(mesh.corners[c])]; b != kInvalidIndex)
+          d = std::min(d, least[b][corner_of(mesh.corners[c])]);
+      bound = std::max(bound, d);
+    }
+    return bound;
+  };
+  std::size_t pops = 0;
+  double complete_to = kInf;   // stopped early: values up to here are final
   while (!queue.empty()) {
     const auto [key, f, st] = queue.top();
     queue.pop();
     if (st != stamp[f]) continue;
+    if (!options.targets.empty() && (++pops & 31) == 0 && key > targets_bound() + 2 * mesh.mean_edge) {
+      complete_to = key;
+      break;
+    }
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i;
       const Index va = mesh.triangles[f][i];
@@ -425,7 +312,7 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
         };
         bool changed = false;
         for (unsigned w = 0; w < count[f]; ++w) {
-          const Window& src = win[f * k + w];
+          const Window& src = win[block[f] * k + w];
           Window t = src;
           t.s = map(src.s);
           if (src.rays)
@@ -447,20 +334,23 @@ std::vector<double> WindowGeodesics::distances(const std::vector<Index>& sources
     for (unsigned w = 0; w < count[f]; ++w)
       for (int c = 0; c < 3; ++c) {
         const Index v = mesh.triangles[f][c];
-        const double d = value_at(win[f * k + w], frame[f][c]);
-        if (d < dist[v]) dist[v] = d, from[v] = win[f * k + w].label;
+        const Window& x = win[block[f] * k + w];
+        const double d = value_at(x, frame[f][c]);
+        if (d < dist[v]) dist[v] = d, from[v] = x.label;
       }
   }
-  for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) dist[sources[k_src]] = 0, from[sources[k_src]] = Index(k_src);
+  for (std::size_t k_src = 0; k_src < sources.size(); ++k_src)
+    if (sources[k_src].kind == Source::Kind::vertex) dist[sources[k_src].element] = 0, from[sources[k_src].element] = Index(k_src);
   // Along the input's edges, with GSP's own relaxation (vertex_relaxation.hpp): a value above
   // the shortest edge path (a window lost where a face kept others, a vertex the windows do
   // not reach across a vertex-only joint) takes that path, which is on the surface too.
   detail::relax_along_edges<double>(*mesh.input_triangles, mesh.input_length, 1.0, mesh.skipped,
-                                    mesh.input_corner_begin, mesh.input_corners, nullptr, kInf, 0.0, dist, from,
+                                    mesh.input_corner_begin, mesh.input_corners, nullptr, complete_to, 0.0, dist, from,
                                     relaxed);
   if (stats) stats->window_updates = updates, stats->faces_reached = reached, stats->relaxed = relaxed;
-  if (label) *label = std::move(from);
-  return dist;
+  result.vertex_distance = std::move(dist);
+  result.vertex_source = std::move(from);
+  return result;
 }
 
 }  // namespace gsp

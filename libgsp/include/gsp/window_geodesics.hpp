@@ -14,7 +14,9 @@
 //
 // Measured against GSP and CGAL's exact method in docs/benchmarks.md ("Windows per face");
 // single-threaded, double precision, priority-queue order. Not used by GSP's solver:
-// gsp-geodesic --method windows and gsp-bench's `gsp-windows` / `gsp-windows3` run it.
+// gsp-geodesic --method windows and gsp-bench's `gsp-windows` / `gsp-windows3` run it, and
+// paths (gsp::pathfinding, PathMethod::windows, the default) walk back through a WindowField.
+#include <gsp/geodesics.hpp>
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
@@ -25,12 +27,52 @@ namespace gsp {
 
 struct WindowOptions {
   unsigned windows = 2;   // per face, 1 to 8
+  // Stop once these vertices are settled: the queue's least key is past the largest of their
+  // values by two mean edge lengths (a face's key is its least value at seven sample points,
+  // so a face can hold a value up to about an edge below its key). Up to 16 targets the order
+  // is A*'s (the key plus a straight-line lower bound to the nearest target), so the
+  // propagation stays near the corridors that lead to them. Empty: the whole mesh.
+  // Paths to a few end points need no more (gsp::pathfinding, method windows).
+  std::vector<Index> targets;
 };
 
 struct WindowStats {
   std::size_t window_updates = 0;   // windows a face took (new or merged)
   std::size_t faces_reached = 0;
   std::size_t relaxed = 0;          // vertex values lowered along the input's edges afterwards
+};
+
+class WindowGeodesics;
+
+// A computed field: the vertex distances and every face's windows, for walking a geodesic back
+// from any point of the surface (gsp::pathfinding traces paths through it). Holds a reference
+// to the WindowGeodesics that made it, which must outlive it.
+class WindowField {
+ public:
+  std::vector<double> vertex_distance;   // +inf where unreached
+  std::vector<Index> vertex_source;      // index into the sources of the nearest; kInvalidIndex unreached
+
+  bool reached(Index face) const;
+  // Where the geodesic into point x (3D, projected into the face's plane) of `face` comes from
+  // in a straight line: `position` is the window's source S (a 3D point in the face's plane,
+  // usually outside it) or, when the geodesic bends at a vertex W on the way (x in a window's
+  // shadow wedge), W unfolded into the plane; `sigma` is the distance left there. Of the face's
+  // windows the one giving x the least value. Unreached faces: sigma +inf, source kInvalidIndex.
+  // Throws InvalidInput when the field was computed on the intrinsic Delaunay faces (they are
+  // not the input's faces; build the WindowGeodesics with intrinsic_delaunay = false).
+  VirtualSource source_at(Index face, Vec3 x) const;
+  // The field's value at a point of an input face (least over its windows; the same error).
+  double distance_at(Index face, const std::array<double, 3>& barycentric) const;
+
+  WindowField();
+  ~WindowField();
+  WindowField(WindowField&&) noexcept;
+  WindowField& operator=(WindowField&&) noexcept;
+
+ private:
+  friend class WindowGeodesics;
+  struct Data;
+  std::unique_ptr<Data> data_;
 };
 
 class WindowGeodesics {
@@ -54,8 +96,19 @@ class WindowGeodesics {
   std::vector<double> distances(const std::vector<Index>& sources, const WindowOptions& options = {},
                                 WindowStats* stats = nullptr, std::vector<Index>* label = nullptr) const;
 
+  // The field from the nearest of several sources, vertices or points in faces (a face point
+  // on the propagation's faces: the input's when built with intrinsic_delaunay = false; on the
+  // intrinsic faces only vertex sources are accepted). Offsets are not supported. Throws
+  // std::invalid_argument as above, for a malformed source and a source offset.
+  WindowField field(const std::vector<Source>& sources, const WindowOptions& options = {},
+                    WindowStats* stats = nullptr) const;
+
+  // The faces are the input's (built with intrinsic_delaunay = false).
+  bool on_input_faces() const;
+
+  struct Impl;   // window_geodesics_impl.hpp
+
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 

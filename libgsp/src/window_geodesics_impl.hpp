@@ -1,0 +1,40 @@
+#pragma once
+// What gsp::WindowGeodesics prepares (its faces, frames and rings) and what a computed
+// gsp::WindowField holds (every face's windows), shared by the propagation
+// (window_geodesics.cpp) and the field's queries (window_field.cpp).
+#include <gsp/window_geodesics.hpp>
+
+#include "window_step.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace gsp {
+
+struct WindowGeodesics::Impl {
+  std::size_t num_vertices = 0;
+  const std::vector<Vec3>* positions = nullptr;
+  bool intrinsic = false;   // the faces are the intrinsic Delaunay flip, not the input's
+  double mean_edge = 1;
+  // The input's edges for the final relaxation (vertex_relaxation.hpp): its triangles (the
+  // caller keeps the mesh), their halfedge lengths, skipped faces and vertex -> corner lists.
+  const std::vector<Triangle>* input_triangles = nullptr;
+  std::vector<double> input_length;
+  std::vector<bool> skipped;
+  std::vector<Index> input_corner_begin, input_corners;
+  std::vector<Triangle> triangles;        // the propagation's faces (intrinsic Delaunay or input)
+  std::vector<Index> ring;                // per halfedge: the next face's halfedge on its edge
+  std::vector<std::array<detail::windows::V2, 3>> frame;   // per face: its corners in its own plane
+  std::vector<Index> corner_begin, corners;   // vertex -> corners 3 f + i, CSR
+};
+
+struct WindowField::Data {
+  const WindowGeodesics::Impl* mesh = nullptr;
+  unsigned k = 0;                              // windows per face
+  std::vector<Index> block;                    // per face: its block of k windows; kInvalidIndex unreached
+  std::vector<detail::windows::Window> win;    // face f: win[block[f] * k, block[f] * k + count[f])
+  std::vector<std::uint8_t> count;
+};
+
+}  // namespace gsp
