@@ -24,8 +24,10 @@ double library_length(Index from, Index to) {
   const TriangleMesh mesh = io::read_mesh(kMesh).mesh;
   const GeodesicSolver solver(mesh);
   const pathfinding::PathTracer tracer(mesh);
+  pathfinding::PathQueryOptions o;
+  o.method = pathfinding::PathMethod::windows;   // gsp-path's default
   const auto r = pathfinding::shortest_paths(solver, tracer, pathfinding::Endpoint::at_vertex(from),
-                                             {pathfinding::Endpoint::at_vertex(to)});
+                                             {pathfinding::Endpoint::at_vertex(to)}, o);
   return r.paths.at(0).length;
 }
 

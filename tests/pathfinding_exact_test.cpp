@@ -62,7 +62,8 @@ TEST(PathExact, BothEndsAgainstExact) {
   reference::ExactGeodesicSolver exact(m);
   const GeodesicSolver solver(m);
   const pathfinding::PathTracer tracer(m);
-  pathfinding::PathQueryOptions one_end;
+  pathfinding::PathQueryOptions astar, one_end;
+  astar.method = one_end.method = pathfinding::PathMethod::astar;
   one_end.both_ends = false;
   SplitMix rng{2024};
   double worst = 0, worst_one = 0, sum = 0;
@@ -74,7 +75,7 @@ TEST(PathExact, BothEndsAgainstExact) {
       const Index t = Index(rng.next() % m.num_vertices());
       if (t == s) continue;
       SCOPED_TRACE("source " + std::to_string(s) + " target " + std::to_string(t));
-      const auto both = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)});
+      const auto both = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)}, astar);
       const auto one = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)}, one_end);
       const pathfinding::GeodesicPath& p = both.paths[0];
       expect_valid_path(m, p);
@@ -114,7 +115,9 @@ TEST(PathExact, BothEndsFacePoints) {
     exact.set_sources({from});   // an end point is a reference source as it is
     std::vector<Endpoint> ends;
     for (int k = 0; k < 4; ++k) ends.push_back(Endpoint::in_face(Index(rng.next() % m.num_faces()), {0.6, 0.1, 0.3}));
-    const auto r = pathfinding::shortest_paths(solver, tracer, from, ends);
+    pathfinding::PathQueryOptions astar;
+    astar.method = pathfinding::PathMethod::astar;
+    const auto r = pathfinding::shortest_paths(solver, tracer, from, ends, astar);
     ASSERT_EQ(r.paths.size(), ends.size());
     reversed += r.reversed;
     for (std::size_t k = 0; k < ends.size(); ++k) {

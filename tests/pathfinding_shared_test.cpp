@@ -48,7 +48,9 @@ TEST(PathShared, ArmadilloBothEndsAgainstExact) {
       const Index t = Index(rng.next() % m.num_vertices());
       if (t == s) continue;
       SCOPED_TRACE("source " + std::to_string(s) + " target " + std::to_string(t));
-      const auto r = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)});
+      pathfinding::PathQueryOptions astar;
+      astar.method = pathfinding::PathMethod::astar;
+      const auto r = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(s), {Endpoint::at_vertex(t)}, astar);
       const pathfinding::GeodesicPath& p = r.paths[0];
       expect_valid_path(m, p);
       const double rel = (p.length - ex[t]) / ex[t];

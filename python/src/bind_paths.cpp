@@ -37,7 +37,8 @@ pathfinding::PathMethod method_from(std::string name) {
   if (name == "settle") return pathfinding::PathMethod::settle;
   if (name == "full") return pathfinding::PathMethod::full;
   if (name == "dijkstra_edges") return pathfinding::PathMethod::dijkstra_edges;
-  throw py::value_error("method must be 'astar', 'settle', 'full' or 'dijkstra_edges' (got '" + name + "')");
+  if (name == "windows") return pathfinding::PathMethod::windows;
+  throw py::value_error("method must be 'astar', 'settle', 'full', 'windows' or 'dijkstra_edges' (got '" + name + "')");
 }
 
 std::string describe(const Source& s) {
@@ -94,14 +95,16 @@ void add_path_methods(py::class_<Solver>& cls) {
           throw py::value_error("b: expected a vertex index or a gsp.SurfacePoint (use paths() for several)");
         return trace(s, a, b, method, both_ends, precision).front();
       },
-      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("method") = "astar", py::arg("both_ends") = true,
+      py::arg("a"), py::arg("b"), py::kw_only(), py::arg("method") = "windows", py::arg("both_ends") = true,
       py::arg("precision") = "auto",
       R"(The geodesic path from a to b (vertex indices or gsp.SurfacePoint values): a gsp.Path.
 
-method: 'astar' (goal-directed GSP, default), 'settle', 'full' or 'dijkstra_edges' (along edges).
+method: 'windows' (default: a few windows per face, goal-directed; within 0.01% of exact on the
+corpus), 'astar' (GSP, goal-directed: about 10x faster, on meshes with many nearly equal
+corridors up to a few % long), 'settle', 'full' or 'dijkstra_edges' (along edges).
 both_ends also propagates from b and keeps the shorter taut path. Raises gsp.NoPathError when b
 is not reached from a.)");
-  cls.def("paths", &trace, py::arg("a"), py::arg("b"), py::kw_only(), py::arg("method") = "astar",
+  cls.def("paths", &trace, py::arg("a"), py::arg("b"), py::kw_only(), py::arg("method") = "windows",
           py::arg("both_ends") = true, py::arg("precision") = "auto",
           R"(Geodesic paths from a to each of the end points b (a list): a list of gsp.Path, one field for all.
 

@@ -24,7 +24,7 @@ namespace {
 using namespace gsp;
 
 struct Options {
-  std::string input, output, from, method = "astar", precision = "auto";
+  std::string input, output, from, method = "windows", precision = "auto";
   std::vector<std::string> to;
   bool one_end = false;
   render::PreviewRequest preview;
@@ -39,9 +39,10 @@ void add_options(CLI::App& app, Options& o) {
       ->required()->type_name("V|x,y,z|F:u,v");
   app.add_option("-o,--output", o.output, "paths: .obj (l elements), .ply (edge element), .glb/.gltf "
                  "(LINE_STRIP), .json (points with face and barycentric weights)")->required();
-  app.add_option("--method", o.method, "astar (default: goal-directed, stops at the targets), settle "
-                 "(Dijkstra order, stops at the targets), full (whole mesh), dijkstra-edges (along edges)")
-      ->check(CLI::IsMember({"astar", "settle", "full", "dijkstra-edges"}));
+  app.add_option("--method", o.method, "windows (default: a few windows per face, goal-directed, near exact), "
+                 "astar (GSP, goal-directed: about 10x faster, can take a corridor up to a few % longer), "
+                 "settle (GSP in Dijkstra order), full (GSP over the whole mesh), dijkstra-edges (along edges)")
+      ->check(CLI::IsMember({"windows", "astar", "settle", "full", "dijkstra-edges"}));
   app.add_flag("--one-end", o.one_end, "trace from --from's field only (half the cost; by default every "
                "--to also propagates back towards --from and the shorter of the two paths is kept)");
   app.add_option("--precision", o.precision, "auto (default: double where faces are too thin for float), single or double")
@@ -54,6 +55,7 @@ pathfinding::PathMethod method_of(const std::string& m) {
   if (m == "settle") return pathfinding::PathMethod::settle;
   if (m == "full") return pathfinding::PathMethod::full;
   if (m == "dijkstra-edges") return pathfinding::PathMethod::dijkstra_edges;
+  if (m == "windows") return pathfinding::PathMethod::windows;
   return pathfinding::PathMethod::astar;
 }
 
@@ -123,6 +125,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   ctx.stats()["result"]["found"] = r.paths.size() - missing;
   ctx.stats()["result"]["reversed"] = r.reversed;
   ctx.stats()["result"]["edge_fallbacks"] = r.edge_fallbacks;
+  ctx.stats()["result"]["astar_fallbacks"] = r.astar_fallbacks;
   ctx.stats()["result"]["max_snap_distance"] = snapped;
   cli::Json& ops = ctx.operations();
   ops["faces_expanded"] = r.stats.faces_reached;

@@ -107,13 +107,13 @@ PathPoint vertex_start(const TriangleMesh& mesh, const Connectivity& conn, Index
 
 // A point source in a face round u: the face whose virtual source lies in it at sigma about 0
 // replaces u as the start; false where there is none.
-bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field, Index u,
+bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const SourceField& field, Index u,
                        double scale, PathPoint& start) {
-  const std::vector<double>& d = field.vertex_distance;
+  const std::vector<double>& d = field.vertex_distance();
   for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
     const Index f = face_of(conn.vertex_corners[k]);
-    if (f >= field.face_sources.size() || !field.face_sources[f].reached()) continue;
-    const VirtualSource& vs = field.face_sources[f];
+    if (!field.reached(f)) continue;
+    const VirtualSource vs = field.source_at(f, mesh.positions[u]);
     if (vs.sigma > 1e-9 * (1 + d[u])) continue;
     const Triangle& t = mesh.triangles[f];
     const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = vs.position - a;
@@ -139,9 +139,9 @@ std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& c
   return chain.empty() ? chain : chain_faces(mesh, conn, chain, start_face, end_face);
 }
 
-bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
+bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const SourceField& field,
                   const PathPoint& end, GeodesicPath& out) {
-  const std::vector<double>& d = field.vertex_distance;
+  const std::vector<double>& d = field.vertex_distance();
   if (d.size() != mesh.num_vertices() || end.point.element >= mesh.num_faces()) return false;
   const std::vector<Index> chain = descend(mesh, conn, d, end, kInvalidIndex);
   if (chain.empty()) return false;
@@ -163,8 +163,8 @@ bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const Geod
   if (!shorten_in_sleeve(mesh, conn, start, end, faces, out.points)) out.points = edge_route(mesh, chain, faces, start, end);
   out.length = polyline_length(out.points);
   const Index start_face = start.point.element;
-  out.source = field.face_sources.size() > start_face ? field.face_sources[start_face].source : kInvalidIndex;
-  if (out.source == kInvalidIndex && u < field.vertex_source.size()) out.source = field.vertex_source[u];
+  out.source = field.reached(start_face) ? field.source_at(start_face, start.position).source : kInvalidIndex;
+  if (out.source == kInvalidIndex && u < field.vertex_source().size()) out.source = field.vertex_source()[u];
   return true;
 }
 

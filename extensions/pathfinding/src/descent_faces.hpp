@@ -10,6 +10,8 @@
 #include <gsp/geodesics.hpp>
 #include <gsp/pathfinding/path.hpp>
 
+#include "source_field.hpp"
+
 #include <vector>
 
 namespace gsp::pathfinding::detail {
@@ -24,7 +26,7 @@ std::vector<Index> descent_faces(const TriangleMesh& mesh, const Connectivity& c
 // source is found (a face whose virtual source lies in it with sigma about 0, else the vertex
 // itself), then pulled taut; where no sleeve can be formed, the edge route as it is. False
 // when the descent fails.
-bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field,
+bool descent_path(const TriangleMesh& mesh, const Connectivity& conn, const SourceField& field,
                   const PathPoint& end, GeodesicPath& out);
 
 }  // namespace gsp::pathfinding::detail

@@ -1,5 +1,7 @@
 #include <gsp/pathfinding/path.hpp>
 
+#include <algorithm>
+
 namespace gsp::pathfinding {
 
 void check_endpoint(const TriangleMesh& mesh, const Endpoint& end) {
@@ -12,6 +14,40 @@ double polyline_length(const std::vector<PathPoint>& points) {
   double sum = 0;
   for (std::size_t i = 1; i < points.size(); ++i) sum += distance(points[i - 1].position, points[i].position);
   return sum;
+}
+
+std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
+  const Triangle& t = mesh.triangles[f];
+  const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = x - a;
+  const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
+  const double den = d00 * d11 - d01 * d01;
+  if (!(den > 0)) return {1, 0, 0};
+  std::array<double, 3> b{0, (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den};
+  b[0] = 1 - b[1] - b[2];
+  for (double& w : b) w = std::max(0.0, w);
+  const double sum = b[0] + b[1] + b[2];
+  for (double& w : b) w /= sum;
+  return b;
+}
+
+std::vector<PathPoint> reversed_path(const TriangleMesh& mesh, const std::vector<PathPoint>& points) {
+  const std::vector<PathPoint> plain(points.rbegin(), points.rend());
+  std::vector<PathPoint> out = plain;
+  for (std::size_t j = out.size(); j-- > 1;) {
+    const Index f = plain[j - 1].point.element;   // the old order's face of the segment
+    if (f >= mesh.num_faces()) return plain;
+    const std::array<double, 3> w = weights_in(mesh, f, out[j].position);
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 at = w[0] * mesh.positions[t[0]] + w[1] * mesh.positions[t[1]] + w[2] * mesh.positions[t[2]];
+    const double size = std::max({distance(mesh.positions[t[0]], mesh.positions[t[1]]),
+                                  distance(mesh.positions[t[1]], mesh.positions[t[2]]),
+                                  distance(mesh.positions[t[2]], mesh.positions[t[0]])});
+    // One convention for the whole path: a point its predecessor's face does not hold (the
+    // path named the face after each point) leaves every name as it was.
+    if (!(distance(at, out[j].position) <= 1e-7 * size)) return plain;
+    out[j].point = SurfacePoint::in_face(f, w);
+  }
+  return out;
 }
 
 }  // namespace gsp::pathfinding

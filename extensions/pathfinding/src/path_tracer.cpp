@@ -3,6 +3,7 @@
 #include <gsp/intrinsic/edge_lengths.hpp>
 
 #include "descent_faces.hpp"
+#include "source_field.hpp"
 #include "walk.hpp"
 
 namespace gsp::pathfinding {
@@ -18,6 +19,21 @@ PathTracer::PathTracer(const TriangleMesh& mesh, const TraceOptions& options)
 GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end) const {
   if (field.face_sources.size() != mesh_.num_faces())
     throw InvalidInput("path tracing needs a field computed with want_face_sources on this mesh");
+  return trace_in(detail::GspSourceField(field), end);
+}
+
+GeodesicPath PathTracer::trace(const WindowField& field, const Endpoint& end) const {
+  if (field.vertex_distance.size() != mesh_.num_vertices())
+    throw InvalidInput("path tracing needs a window field computed on this mesh");
+  return trace_in(detail::WindowSourceField(field), end);
+}
+
+const WindowGeodesics& PathTracer::windows() const {
+  std::call_once(windows_once_, [&] { windows_ = std::make_unique<WindowGeodesics>(mesh_, false); });
+  return *windows_;
+}
+
+GeodesicPath PathTracer::trace_in(const detail::SourceField& field, const Endpoint& end) const {
   check_endpoint(mesh_, end);
   const std::size_t max_steps = options_.max_steps ? options_.max_steps : 2 * mesh_.num_faces() + 64;
   try {
@@ -37,7 +53,8 @@ GeodesicPath PathTracer::trace(const GeodesicResult& field, const Endpoint& end)
     }
     GeodesicPath path;
     if (!options_.shorten || !detail::descent_path(mesh_, conn_, field, last, path)) throw;
-    path.field_distance = end.is_vertex() ? field.vertex_distance[end.element] : field.distance_at(mesh_, end.element, end.barycentric);
+    path.field_distance =
+        end.is_vertex() ? field.vertex_distance()[end.element] : field.distance_at(mesh_, end.element, end.barycentric);
     return path;
   }
 }

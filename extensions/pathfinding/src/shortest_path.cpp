@@ -2,10 +2,13 @@
 
 #include <gsp/closest_point.hpp>
 
+#include "source_field.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <chrono>
 #include <exception>
+#include <memory>
 
 namespace gsp::pathfinding {
 
@@ -35,34 +38,6 @@ GeodesicOptions field_options(const TriangleMesh& mesh, const std::vector<Endpoi
   return go;
 }
 
-// Barycentric weights of x (a point of face f: on its plane up to rounding) in f, clamped to
-// >= 0 and summing to 1.
-std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
-  const Triangle& t = mesh.triangles[f];
-  const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = x - a;
-  const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
-  const double den = d00 * d11 - d01 * d01;
-  if (!(den > 0)) return {1, 0, 0};
-  std::array<double, 3> b{0, (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den};
-  b[0] = 1 - b[1] - b[2];
-  for (double& w : b) w = std::max(0.0, w);
-  const double sum = b[0] + b[1] + b[2];
-  for (double& w : b) w /= sum;
-  return b;
-}
-
-// A path traced from the end point's field (from the end back to `from`) in from-to-end order.
-// Each point's face holds the segment that ends there, as in a traced path: after reversing,
-// that is the face the old order gave the point after it.
-std::vector<PathPoint> reversed(const TriangleMesh& mesh, const std::vector<PathPoint>& back) {
-  std::vector<PathPoint> out(back.rbegin(), back.rend());
-  for (std::size_t j = out.size(); j-- > 1;) {
-    const Index f = out[j - 1].point.element;
-    out[j].point = SurfacePoint::in_face(f, weights_in(mesh, f, out[j].position));
-  }
-  return out;
-}
-
 // The traced path starts where the walk found the source: the field's virtual source, stored
 // in single precision by default (about 1e-7 of the model off). Puts it on the source itself.
 void snap_start(const TriangleMesh& mesh, std::vector<PathPoint>& points, const Endpoint& source) {
@@ -76,9 +51,56 @@ void snap_start(const TriangleMesh& mesh, std::vector<PathPoint>& points, const 
   p.point.barycentric = weights_in(mesh, p.point.element, exact);
 }
 
-double field_at(const TriangleMesh& mesh, const GeodesicResult& field, const Endpoint& e) {
-  if (e.is_vertex()) return field.vertex_distance[e.element];
-  return field.distance_at(mesh, e.element, e.barycentric);
+// A propagation from one end point, GSP's or the windows', and the view the walk reads.
+struct Field {
+  GeodesicResult gsp;
+  WindowField windows;
+  std::unique_ptr<detail::SourceField> view;
+  bool is_windows = false;
+};
+
+Field propagate(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+                const std::vector<Endpoint>& to, const PathQueryOptions& options, PropagationStats& stats) {
+  const TriangleMesh& mesh = tracer.mesh();
+  Field f;
+  if (options.method != PathMethod::windows) {
+    f.gsp = solver.compute({Source::at(from)}, field_options(mesh, to, options));
+    stats = f.gsp.stats;
+    f.view = std::make_unique<detail::GspSourceField>(f.gsp);
+    return f;
+  }
+  WindowOptions wo;
+  wo.windows = options.windows;
+  for (const Endpoint& e : to) {
+    check_endpoint(mesh, e);
+    if (e.is_vertex()) {
+      wo.targets.push_back(e.element);
+    } else {
+      const Triangle& t = mesh.triangles[e.element];
+      wo.targets.insert(wo.targets.end(), t.begin(), t.end());
+    }
+  }
+  WindowStats ws;
+  try {
+    f.windows = tracer.windows().field({Source::at(from)}, wo, &ws);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidInput(e.what());
+  }
+  stats = PropagationStats{};
+  stats.faces_reached = ws.faces_reached;
+  stats.face_updates = ws.window_updates;
+  f.view = std::make_unique<detail::WindowSourceField>(f.windows);
+  f.is_windows = true;
+  return f;
+}
+
+GeodesicPath trace_in(const PathTracer& tracer, const Field& field, const Endpoint& end) {
+  return field.is_windows ? tracer.trace(field.windows, end) : tracer.trace(field.gsp, end);
+}
+
+double field_at(const TriangleMesh& mesh, const Field& field, const Endpoint& e) {
+  if (e.is_vertex()) return field.view->vertex_distance()[e.element];
+  return field.view->distance_at(mesh, e.element, e.barycentric);
 }
 
 // A polyline on the surface from a to b: it starts and ends there and each segment lies in a
@@ -124,7 +146,7 @@ void add_stats(PropagationStats& sum, const PropagationStats& s) {
 // against the path along the edges, which always exists where the end is reached: the shorter
 // valid one is kept. A path that failed and has no edge path either rethrows its error.
 void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
-                     const std::vector<Endpoint>& to, const GeodesicResult& field, std::vector<bool>& invalid,
+                     const std::vector<Endpoint>& to, const Field& field, std::vector<bool>& invalid,
                      std::vector<std::exception_ptr>& failed, PathQueryResult& r) {
   std::vector<std::size_t> suspect;
   for (std::size_t k = 0; k < to.size(); ++k) {
@@ -165,7 +187,7 @@ struct Query {
   const TriangleMesh& mesh;
   const Endpoint& from;
   const std::vector<Endpoint>& to;
-  const GeodesicResult& field;
+  const Field& field;
   double tolerance;
   Vec3 from_pos;
   std::vector<std::exception_ptr> failed;
@@ -178,7 +200,7 @@ void trace_forward(Query& q, PathQueryResult& r) {
   r.paths.resize(q.to.size());
   for (std::size_t k = 0; k < q.to.size(); ++k) {
     try {
-      r.paths[k] = q.tracer.trace(q.field, q.to[k]);
+      r.paths[k] = trace_in(q.tracer, q.field, q.to[k]);
       snap_start(q.mesh, r.paths[k].points, q.from);
       r.paths[k].length = polyline_length(r.paths[k].points);
       if (!on_surface(q.mesh, r.paths[k].points, q.from_pos, q.to[k].position(q.mesh), q.tolerance))
@@ -194,22 +216,23 @@ void trace_forward(Query& q, PathQueryResult& r) {
 // The field grown from end k accumulates its errors from the other end, so near from's cut
 // locus it may pick the shorter side: its path, walked back to `from`, replaces a failed,
 // invalid or longer forward path.
-void trace_back(Query& q, const GeodesicOptions& back_options, std::size_t k, PathQueryResult& r) {
+void trace_back(Query& q, const PathQueryOptions& options, std::size_t k, PathQueryResult& r) {
   GeodesicPath& path = r.paths[k];
   if (!q.failed[k] && !q.invalid[k] && (!path.found() || !(path.length > 0))) return;
   auto t0 = Clock::now();
-  const GeodesicResult back_field = q.solver.compute({Source::at(q.to[k])}, back_options);
+  PropagationStats back_stats;
+  const Field back_field = propagate(q.solver, q.tracer, q.to[k], {q.from}, options, back_stats);
   r.compute_seconds += seconds_since(t0);
-  add_stats(r.reverse_stats, back_field.stats);
+  add_stats(r.reverse_stats, back_stats);
   t0 = Clock::now();
   try {
-    GeodesicPath back = q.tracer.trace(back_field, q.from);
+    GeodesicPath back = trace_in(q.tracer, back_field, q.from);
     snap_start(q.mesh, back.points, q.to[k]);
     const bool back_valid =
         back.found() && on_surface(q.mesh, back.points, q.to[k].position(q.mesh), q.from_pos, q.tolerance);
     if (back_valid && (q.failed[k] || q.invalid[k] || polyline_length(back.points) < path.length)) {
       if (q.failed[k] || q.invalid[k]) path.field_distance = field_at(q.mesh, q.field, q.to[k]);
-      path.points = reversed(q.mesh, back.points);
+      path.points = reversed_path(q.mesh, back.points);
       path.length = polyline_length(path.points);
       path.source = 0;
       q.failed[k] = nullptr;
@@ -222,28 +245,45 @@ void trace_back(Query& q, const GeodesicOptions& back_options, std::size_t k, Pa
   r.trace_seconds += seconds_since(t0);
 }
 
+// The windows cross only the edges the faces share; GSP also joins vertices at one position
+// (open seams, touching parts: gsp-core.md, bridges). An end the windows did not reach gets
+// GSP's A* path, where GSP reaches it.
+void astar_for_unreached(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+                         const std::vector<Endpoint>& to, const PathQueryOptions& options, PathQueryResult& r) {
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 0; k < to.size(); ++k)
+    if (!r.paths[k].found()) missing.push_back(k);
+  if (missing.empty()) return;
+  std::vector<Endpoint> ends;
+  for (std::size_t k : missing) ends.push_back(to[k]);
+  PathQueryOptions astar = options;
+  astar.method = PathMethod::astar;
+  const PathQueryResult g = shortest_paths(solver, tracer, from, ends, astar);
+  for (std::size_t i = 0; i < missing.size(); ++i)
+    if (g.paths[i].found()) r.paths[missing[i]] = g.paths[i], ++r.astar_fallbacks;
+  r.compute_seconds += g.compute_seconds, r.trace_seconds += g.trace_seconds;
+  r.edge_fallbacks += g.edge_fallbacks, r.reversed += g.reversed;
+}
+
 }  // namespace
 
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
                                const std::vector<Endpoint>& to, const PathQueryOptions& options) {
   if (options.method == PathMethod::dijkstra_edges) throw InvalidInput("use edge_paths() for Dijkstra on edges");
   const TriangleMesh& mesh = tracer.mesh();
-  const GeodesicOptions go = field_options(mesh, to, options);
   PathQueryResult r;
   auto t0 = Clock::now();
-  const GeodesicResult field = solver.compute({Source::at(from)}, go);
+  const Field field = propagate(solver, tracer, from, to, options, r.stats);
   r.compute_seconds = seconds_since(t0);
-  r.stats = field.stats;
   t0 = Clock::now();
   Query q{solver, tracer, mesh, from, to, field, 1e-6 * bounding_box(mesh).diagonal(), from.position(mesh),
           std::vector<std::exception_ptr>(to.size()), std::vector<bool>(to.size(), false)};
   trace_forward(q, r);
   r.trace_seconds = seconds_since(t0);
-  if (options.both_ends) {
-    const GeodesicOptions back_options = field_options(mesh, {from}, options);
-    for (std::size_t k = 0; k < to.size(); ++k) trace_back(q, back_options, k, r);
-  }
+  if (options.both_ends)
+    for (std::size_t k = 0; k < to.size(); ++k) trace_back(q, options, k, r);
   edge_safety_net(mesh, tracer, from, to, field, q.invalid, q.failed, r);
+  if (options.method == PathMethod::windows) astar_for_unreached(solver, tracer, from, to, options, r);
   return r;
 }
 

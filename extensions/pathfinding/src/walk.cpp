@@ -71,7 +71,8 @@ Walker Walk::start(const Endpoint& end) {
 // The field's own distance at the end, reported beside the path's length to measure it by.
 double Walk::end_distance(const Endpoint& end) const {
   if (!end.is_vertex()) return field_.distance_at(mesh_, end.element, end.barycentric);
-  return field_.vertex_distance.size() > end.element ? field_.vertex_distance[end.element] : kInf;
+  const std::vector<double>& d = field_.vertex_distance();
+  return d.size() > end.element ? d[end.element] : kInf;
 }
 
 // Every arrival at a vertex ends the walk there when v is the source, and fails the trace when
@@ -182,17 +183,17 @@ void Walk::pull_taut() {
   // Not shortened, or no sleeve (the walk passes a vertex whose fan has a non-manifold edge
   // or a boundary between the two faces): the walk as it is, in source-to-end order (consecutive points
   // still share a face; each point's barycentrics are in its own face).
-  std::reverse(out_.points.begin(), out_.points.end());
+  out_.points = reversed_path(mesh_, out_.points);
 }
 
 // A taut path cannot change sides of a feature: of the taut walk, the taut descent route and
 // the walk itself (source-to-end order), the shortest is the path.
 void Walk::keep_shortest(std::vector<PathPoint>& taut, const PathPoint& first, const PathPoint& last) {
-  std::vector<PathPoint> walk(out_.points.rbegin(), out_.points.rend());
+  std::vector<PathPoint> walk = reversed_path(mesh_, out_.points);
   out_.points.swap(taut);
   // The route down the field's vertex distances, pulled taut too: keep the shorter.
   std::vector<PathPoint> other;
-  const std::vector<Index> faces = descent_faces(mesh_, conn_, field_.vertex_distance, first, last);
+  const std::vector<Index> faces = descent_faces(mesh_, conn_, field_.vertex_distance(), first, last);
   if (!faces.empty() && shorten_in_sleeve(mesh_, conn_, first, last, faces, other) &&
       polyline_length(other) < polyline_length(out_.points))
     out_.points.swap(other);

@@ -6,6 +6,8 @@
 #include <gsp/geodesics.hpp>
 #include <gsp/pathfinding/path.hpp>
 
+#include "source_field.hpp"
+
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -48,7 +50,7 @@ struct Walker {
 
 class Walk {
  public:
-  Walk(const TriangleMesh& mesh, const Connectivity& conn, const GeodesicResult& field, double mean_edge,
+  Walk(const TriangleMesh& mesh, const Connectivity& conn, const SourceField& field, double mean_edge,
        std::size_t max_steps, bool shorten)
       : mesh_(mesh), conn_(conn), field_(field), eps_(1e-7 * mean_edge), max_steps_(max_steps), shorten_(shorten) {}
 
@@ -57,7 +59,7 @@ class Walk {
   GeodesicPath run(const Endpoint& end);
 
  private:
-  bool reached(Index f) const { return f < field_.face_sources.size() && field_.face_sources[f].reached(); }
+  bool reached(Index f) const { return field_.reached(f); }
 
   // Barycentric coordinates of x (projected into f's plane); false for a degenerate face.
   bool bary_of(Index f, Vec3 x, Bary& b) const {
@@ -66,7 +68,7 @@ class Walk {
     const Vec3 e0 = mesh_.positions[t[1]] - a, e1 = mesh_.positions[t[2]] - a, e2 = x - a;
     const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
     const double denom = d00 * d11 - d01 * d01;
-    if (!(denom > 1e-12 * d00 * d11) || repeats_vertex(t)) return false;
+    if (!(denom > 1e-24 * d00 * d11) || repeats_vertex(t)) return false;
     b[1] = (d11 * d20 - d01 * d21) / denom;
     b[2] = (d00 * d21 - d01 * d20) / denom;
     b[0] = 1 - b[1] - b[2];
@@ -77,11 +79,11 @@ class Walk {
     return reached(f) && bary_of(f, mesh_.positions[mesh_.triangles[f][0]], b);
   }
   double own_value(Index f, Vec3 x) const {
-    const VirtualSource& s = field_.face_sources[f];
+    const VirtualSource s = field_.source_at(f, x);
     return s.sigma + distance(x, s.position);
   }
   void adopt_own(Walker& w) const {
-    const VirtualSource& s = field_.face_sources[w.face];
+    const VirtualSource s = field_.source_at(w.face, w.position);
     w.target = s.position, w.sigma = s.sigma, w.label = s.source, w.own = true;
   }
   // Appends w's point; its face is the one the segment from the previous point lies in.
@@ -120,7 +122,7 @@ class Walk {
 
   const TriangleMesh& mesh_;
   const Connectivity& conn_;
-  const GeodesicResult& field_;
+  const SourceField& field_;
   double eps_;
   std::size_t max_steps_;
   bool shorten_;

@@ -37,7 +37,7 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
     const Index c = conn_.vertex_corners[k];
     const Index f = face_of(c);
     if (!usable(f)) continue;
-    const VirtualSource& s = field_.face_sources[f];
+    const VirtualSource s = field_.source_at(f, pv);
     if (distance(s.position, pv) <= 10 * eps_) {
       // The face's source sits on v: v is the real source (sigma 0), or the path turned here
       // and this face does not lead further.
@@ -65,7 +65,7 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
     if (carried < kInf) return VertexStep::keep;
     // Every reached face has its source on v: a vertex source with an initial offset.
     if (at_v != kInvalidIndex) {
-      out_.source = field_.face_sources[at_v].source;
+      out_.source = field_.source_at(at_v, pv).source;
       return VertexStep::source;
     }
     return VertexStep::stuck;

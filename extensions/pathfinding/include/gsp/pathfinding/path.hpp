@@ -43,4 +43,15 @@ void check_endpoint(const TriangleMesh& mesh, const Endpoint& end);
 // Sum of the segment lengths.
 double polyline_length(const std::vector<PathPoint>& points);
 
+// Barycentric weights of x (a point of face f: on its plane up to rounding) in f, clamped to
+// >= 0 and summing to 1.
+std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x);
+
+// The path the other way round. Each point is given the face of the segment that now ends at
+// it (the face the point before it named in the old order: the convention of a traced path)
+// where every point lies on that face; otherwise (the path named the face of the segment after
+// each point, as a walk does in its own order) every point keeps its own face. Either way each
+// point lies on the face it names and each segment in a face one of its ends names.
+std::vector<PathPoint> reversed_path(const TriangleMesh& mesh, const std::vector<PathPoint>& points);
+
 }  // namespace gsp::pathfinding

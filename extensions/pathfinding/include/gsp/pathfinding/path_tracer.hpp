@@ -17,11 +17,18 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/pathfinding/path.hpp>
+#include <gsp/window_geodesics.hpp>
 
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 namespace gsp::pathfinding {
+
+namespace detail {
+class SourceField;
+}
 
 struct TraceOptions {
   // Walk steps (face crossings and turns) before giving up; 0: 2 * faces + 64. Guards against
@@ -45,6 +52,14 @@ class PathTracer {
   // neither the walk (a cycle, max_steps exceeded, a walk off the boundary) nor the descent
   // route can be completed.
   GeodesicPath trace(const GeodesicResult& field, const Endpoint& end) const;
+  // The same through a window field (gsp/window_geodesics.hpp) computed on this mesh's own
+  // faces (windows(), or a WindowGeodesics built with intrinsic_delaunay = false): at each
+  // point the walk follows the window that explains it, so it keeps to the corridor of that
+  // point's geodesic where GSP's one source per face may have taken another's.
+  GeodesicPath trace(const WindowField& field, const Endpoint& end) const;
+
+  // The window propagation on this mesh's faces, built on first use (thread-safe).
+  const WindowGeodesics& windows() const;
 
   // One field, many end points (one source to many targets). An end point the field does not
   // reach gives an empty path (found() false) instead of NoPath.
@@ -54,10 +69,14 @@ class PathTracer {
   const Connectivity& connectivity() const { return conn_; }
 
  private:
+  GeodesicPath trace_in(const detail::SourceField& field, const Endpoint& end) const;
+
   const TriangleMesh& mesh_;
   Connectivity conn_;
   TraceOptions options_;
   double mean_edge_ = 1;
+  mutable std::once_flag windows_once_;
+  mutable std::unique_ptr<WindowGeodesics> windows_;
 };
 
 }  // namespace gsp::pathfinding
