@@ -139,6 +139,10 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   std::vector<Index>& block = data.block;
   std::vector<std::uint8_t>& count = data.count;
   std::vector<std::uint32_t> stamp(nf, 0);
+  // Per face, one bit per slot: the window in it was stepped into the neighbours at a pop
+  // since it last changed. A face popped again sends only its new or changed windows (the
+  // others' offers would change nothing: a neighbour's slots only get better).
+  std::vector<std::uint8_t> sent(nf, 0);
   auto samples = [&](Index f) {
     const auto& c = frame[f];
     return std::array<V2, kSamples>{c[0], c[1], c[2], (1.0 / 3) * (c[0] + c[1] + c[2]), 0.5 * (c[0] + c[1]),
@@ -150,17 +154,19 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
     for (int i = 0; i < kSamples; ++i) v[i] = value_at(w, pts[i]);
     return v;
   };
-  auto face_min = [&](Index f, const std::array<V2, kSamples>& pts) {
+  // Per slot: its window's values at the face's samples (computed once, when the slot is
+  // written); per block: the least of them at each sample.
+  std::vector<Values> slot_values;
+  std::vector<Values> least;
+  auto face_min = [&](Index f) {
     Values m;
     m.fill(kInf);
     for (unsigned i = 0; i < count[f]; ++i) {
-      const Values v = values(win[block[f] * k + i], pts);
+      const Values& v = slot_values[block[f] * k + i];
       for (int j = 0; j < kSamples; ++j) m[j] = std::min(m[j], v[j]);
     }
     return m;
   };
-  // Per block: the least value over its face's windows at each sample, kept with the windows.
-  std::vector<Values> least;
   using Entry = std::tuple<double, Index, std::uint32_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   // With a few targets the order is A*'s: a face's key plus a lower bound of the distance from
@@ -191,11 +197,15 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
       block[g] = Index(least.size());
       least.push_back(first);
       win.resize(win.size() + k);
+      slot_values.resize(win.size());
       win[block[g] * k] = w;
+      slot_values[block[g] * k] = first;
       count[g] = 1;
+      sent[g] = 0;
       return ++updates, true;
     }
     Window* slots = &win[block[g] * k];
+    Values* slot_v = &slot_values[block[g] * k];
     Values& cur = least[block[g]];
     for (unsigned i = 0; i < count[g]; ++i) {
       Window merged;
@@ -203,7 +213,9 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
       if (m == 0) continue;
       if (m == 1) return false;
       slots[i] = merged;
-      const Values after = face_min(g, pts);
+      slot_v[i] = values(merged, pts);
+      sent[g] &= std::uint8_t(~(1u << i));
+      const Values after = face_min(g);
       bool better = false;
       for (int j = 0; j < kSamples; ++j) better |= after[j] < cur[j] * (1 - 1e-9);
       cur = after;
@@ -214,6 +226,8 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
     for (int j = 0; j < kSamples; ++j) better |= nv_[j] < cur[j] * (1 - 1e-9);
     if (!better) return false;
     if (count[g] < k) {
+      sent[g] &= std::uint8_t(~(1u << count[g]));
+      slot_v[count[g]] = nv_;
       slots[count[g]++] = w;
       for (int j = 0; j < kSamples; ++j) cur[j] = std::min(cur[j], nv_[j]);
       return ++updates, true;
@@ -221,7 +235,7 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
     // Full: keep the k of the k + 1 windows that leave the fewest samples unreached, then the
     // lowest sum; the new one must be among them.
     std::array<Values, 9> all;
-    for (unsigned i = 0; i < k; ++i) all[i] = values(slots[i], pts);
+    for (unsigned i = 0; i < k; ++i) all[i] = slot_v[i];
     all[k] = nv_;
     int best_drop = -1;
     std::pair<int, double> best_key{kSamples + 1, kInf};
@@ -238,6 +252,8 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
     }
     if (best_drop == int(k)) return false;
     slots[best_drop] = w;
+    slot_v[best_drop] = nv_;
+    sent[g] &= std::uint8_t(~(1u << best_drop));
     cur = best_min;
     return ++updates, true;
   };
@@ -312,6 +328,7 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
         };
         bool changed = false;
         for (unsigned w = 0; w < count[f]; ++w) {
+          if (sent[f] >> w & 1u) continue;
           const Window& src = win[block[f] * k + w];
           Window t = src;
           t.s = map(src.s);
@@ -324,6 +341,7 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
         if (changed) push(g);
       }
     }
+    sent[f] = std::uint8_t((1u << count[f]) - 1);
   }
 
   std::vector<double> dist(nv, kInf);

@@ -73,7 +73,11 @@ inline bool has_width(const Window& win) {
 // Windows with rays have width (step() makes no other), so the ray tests below are sound.
 inline double value_at(const Window& win, V2 p) {
   if (win.rays) {
+    // Inside the wedge (the usual case) without the tolerances' square roots: beyond_ray
+    // needs a cross product of the wrong sign.
     const double o = ray_side(win);
+    const V2 q = p - win.s;
+    if (cross(win.w[0] - win.s, q) * o >= 0 && cross(win.w[1] - win.s, q) * o <= 0) return norm(q) + win.sigma;
     for (int r = 0; r < 2; ++r)
       if (beyond_ray(win, r, p, o))
         return in_shadow(win, r, p) ? norm(p - win.w[r]) + norm(win.w[r] - win.s) + win.sigma : kInf;
