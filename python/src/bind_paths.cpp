@@ -100,7 +100,7 @@ void add_path_methods(py::class_<Solver>& cls) {
       R"(The geodesic path from a to b (vertex indices or gsp.SurfacePoint values): a gsp.Path.
 
 method: 'windows' (default: a few windows per face, goal-directed; within 0.01% of exact on the
-corpus), 'astar' (GSP, goal-directed: about 10x faster, on meshes with many nearly equal
+corpus), 'astar' (GSP, goal-directed: about 7x faster, on meshes with many nearly equal
 corridors up to a few % long), 'settle', 'full' or 'dijkstra_edges' (along edges).
 both_ends also propagates from b and keeps the shorter taut path. Raises gsp.NoPathError when b
 is not reached from a.)");

@@ -40,7 +40,7 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("-o,--output", o.output, "paths: .obj (l elements), .ply (edge element), .glb/.gltf "
                  "(LINE_STRIP), .json (points with face and barycentric weights)")->required();
   app.add_option("--method", o.method, "windows (default: a few windows per face, goal-directed, near exact), "
-                 "astar (GSP, goal-directed: about 10x faster, can take a corridor up to a few % longer), "
+                 "astar (GSP, goal-directed: about 7x faster, can take a corridor up to a few % longer), "
                  "settle (GSP in Dijkstra order), full (GSP over the whole mesh), dijkstra-edges (along edges)")
       ->check(CLI::IsMember({"windows", "astar", "settle", "full", "dijkstra-edges"}));
   app.add_flag("--one-end", o.one_end, "trace from --from's field only (half the cost; by default every "

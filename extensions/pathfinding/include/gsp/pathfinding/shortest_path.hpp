@@ -31,8 +31,8 @@ enum class PathMethod : std::uint8_t {
 
 struct PathQueryOptions {
   // Windows by default: over 61 corpus meshes (20 paths each, from both ends) no path more than
-  // 0.06% over CGAL's exact length, against 12 pairs above 0.5% (worst 14.6%) with astar, at
-  // 12x astar's time (median; docs/pathfinding.md, "Windows").
+  // 0.04% over CGAL's exact length, against 12 pairs above 0.5% (worst 14.6%) with astar, at
+  // 7x astar's time (median; docs/pathfinding.md, "Windows").
   PathMethod method = PathMethod::windows;
   Precision precision = Precision::automatic;   // as GeodesicOptions: double where faces need it
   // Also propagate from every end point back towards `from` (same method), trace that field
