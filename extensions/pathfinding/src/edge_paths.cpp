@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 namespace gsp::pathfinding {
 
@@ -13,21 +14,59 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // A point of the path at vertex v, placed in a face that also holds `other` (so consecutive
-// points share a face); any face of v when there is none.
+// points share a face), else any face of v; faces with an area first (a zero-area face has no
+// plane to hold a point: the poles of a UV sphere).
 PathPoint vertex_point(const TriangleMesh& mesh, const Connectivity& conn, Index v, Index other) {
   PathPoint p;
   p.position = mesh.positions[v];
+  int rank = -1;   // 3: shares `other` and has an area, 2: shares, 1: has an area, 0: any
   for (Index k = conn.vertex_corner_begin[v]; k < conn.vertex_corner_begin[v + 1]; ++k) {
     const Index c = conn.vertex_corners[k];
     const Triangle& t = mesh.triangles[face_of(c)];
     const bool shares = other == kInvalidIndex || t[0] == other || t[1] == other || t[2] == other;
-    if (p.point.element == kInvalidIndex || shares) {
+    const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], d = mesh.positions[t[2]];
+    const bool area = norm(cross(b - a, d - a)) > 0;
+    const int r = 2 * int(shares) + int(area);
+    if (r > rank) {
+      rank = r;
       p.point = SurfacePoint::in_face(face_of(c), {0, 0, 0});
       p.point.barycentric[corner_of(c)] = 1;
-      if (shares) break;
+      if (r == 3) break;
     }
   }
   return p;
+}
+
+// The neighbour w of u with d[w] < d[u] that explains d[u] best (d[w] + |wu| smallest, within
+// rounding of d[u]); kInvalidIndex when none.
+Index predecessor(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d, Index u) {
+  Index next = kInvalidIndex;
+  double best = d[u];
+  for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
+    const Triangle& t = mesh.triangles[face_of(conn.vertex_corners[k])];
+    for (Index w : t)
+      if (w != u && d[w] < d[u] && d[w] + distance(mesh.positions[w], mesh.positions[u]) <= best * (1 + 1e-12))
+        best = d[w] + distance(mesh.positions[w], mesh.positions[u]), next = w;
+  }
+  return next;
+}
+
+// Of the vertices joined to u by edges of length zero (breadth first), the first that is the
+// path's start `goal` or has a predecessor; kInvalidIndex when none.
+Index copy_with_predecessor(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d, Index u,
+                            Index goal) {
+  std::vector<Index> queue{u};
+  std::unordered_set<Index> seen{u};
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const Index x = queue[i];
+    if (x != u && (x == goal || predecessor(mesh, conn, d, x) != kInvalidIndex)) return x;
+    for (Index k = conn.vertex_corner_begin[x]; k < conn.vertex_corner_begin[x + 1]; ++k)
+      for (Index w : mesh.triangles[face_of(conn.vertex_corners[k])])
+        if (!seen.count(w) && mesh.positions[w].x == mesh.positions[x].x && mesh.positions[w].y == mesh.positions[x].y &&
+            mesh.positions[w].z == mesh.positions[x].z && d[w] <= d[u])
+          seen.insert(w), queue.push_back(w);
+  }
+  return kInvalidIndex;
 }
 
 GeodesicPath backtrack(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d,
@@ -59,15 +98,14 @@ GeodesicPath backtrack(const TriangleMesh& mesh, const Connectivity& conn, const
         break;
       }
     }
-    Index next = kInvalidIndex;
-    double best = d[u];
-    for (Index k = conn.vertex_corner_begin[u]; k < conn.vertex_corner_begin[u + 1]; ++k) {
-      const Triangle& t = mesh.triangles[face_of(conn.vertex_corners[k])];
-      for (Index w : t)
-        if (w != u && d[w] < d[u] && d[w] + distance(mesh.positions[w], mesh.positions[u]) <= best * (1 + 1e-12))
-          best = d[w] + distance(mesh.positions[w], mesh.positions[u]), next = w;
+    Index next = predecessor(mesh, conn, d, u);
+    if (next == kInvalidIndex) {
+      // u's distance came over edges of length zero (the poles of a UV sphere stored with
+      // zero-area faces: a chain of copies of one point): go to the copy that has one.
+      const Index x = copy_with_predecessor(mesh, conn, d, u, from.is_vertex() ? from.element : kInvalidIndex);
+      if (x == kInvalidIndex) throw Error("edge path: no predecessor at vertex " + std::to_string(u));
+      next = x;
     }
-    if (next == kInvalidIndex) throw Error("edge path: no predecessor at vertex " + std::to_string(u));
     path.points.push_back(vertex_point(mesh, conn, next, u));
     u = next;
   }
