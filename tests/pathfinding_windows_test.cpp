@@ -148,32 +148,5 @@ TEST(PathWindows, NeedlePlateAgainstExact) {
   EXPECT_GT(n, 30);
 }
 
-// Points inside faces at both ends (a window source in a face, targets at the end faces'
-// corners): every path within 0.1% of CGAL's exact distance between the two points.
-TEST(PathWindows, FacePointsAgainstExact) {
-  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
-  reference::ExactGeodesicSolver exact(m);
-  const GeodesicSolver solver(m);
-  const pathfinding::PathTracer tracer(m);
-  SplitMix rng{7};
-  for (int trial = 0; trial < 3; ++trial) {
-    const Endpoint from = Endpoint::in_face(Index(rng.next() % m.num_faces()), {0.2, 0.5, 0.3});
-    exact.set_sources({from});
-    std::vector<Endpoint> ends;
-    for (int k = 0; k < 4; ++k) ends.push_back(Endpoint::in_face(Index(rng.next() % m.num_faces()), {0.6, 0.1, 0.3}));
-    const auto r = pathfinding::shortest_paths(solver, tracer, from, ends);   // windows: the default
-    ASSERT_EQ(r.paths.size(), ends.size());
-    for (std::size_t k = 0; k < ends.size(); ++k) {
-      const pathfinding::GeodesicPath& p = r.paths[k];
-      expect_valid_path(m, p);
-      EXPECT_EQ(distance(p.points.front().position, from.position(m)), 0.0);
-      EXPECT_EQ(distance(p.points.back().position, ends[k].position(m)), 0.0);
-      const double ex = exact.distance_to_point(ends[k].element, ends[k].barycentric);
-      EXPECT_GT(p.length, ex * (1 - 1e-6));
-      EXPECT_LT(p.length, ex * 1.001);
-    }
-  }
-}
-
 }  // namespace
 }  // namespace gsp::test
