@@ -87,8 +87,10 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   auto build = ctx.timer().scope("build");
   const pathfinding::PathTracer tracer(in.mesh);
   const bool edges = o.method == "dijkstra-edges";
+  // The windows need no GSP solver (one is built only if an end point needs GSP's A* path).
   std::unique_ptr<GeodesicSolver> solver;
-  if (!edges) solver = std::make_unique<GeodesicSolver>(in.mesh);
+  if (!edges && o.method != "windows") solver = std::make_unique<GeodesicSolver>(in.mesh);
+  if (o.method == "windows") tracer.windows();   // its preparation, timed as the build
   build.stop();
 
   pathfinding::PathQueryResult r;
@@ -101,7 +103,8 @@ std::size_t run(cli::Context& ctx, const Options& o) {
                    : o.precision == "single" ? Precision::single
                                              : Precision::automatic;
     po.both_ends = !o.one_end;
-    r = pathfinding::shortest_paths(*solver, tracer, from.endpoint, ends, po);
+    r = solver ? pathfinding::shortest_paths(*solver, tracer, from.endpoint, ends, po)
+               : pathfinding::shortest_paths(tracer, from.endpoint, ends, po);
   }
   ctx.timer().add("compute", r.compute_seconds);
   ctx.timer().add("trace", r.trace_seconds);

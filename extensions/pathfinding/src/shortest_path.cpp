@@ -51,6 +51,23 @@ void snap_start(const TriangleMesh& mesh, std::vector<PathPoint>& points, const 
   p.point.barycentric = weights_in(mesh, p.point.element, exact);
 }
 
+// GSP's solver: the caller's, or built from the tracer's mesh the first time it is needed (a
+// windows query needs one only for an end point the windows cannot reach).
+class LazySolver {
+ public:
+  LazySolver(const GeodesicSolver* given, const PathTracer& tracer) : given_(given), tracer_(tracer) {}
+  const GeodesicSolver& get() {
+    if (given_) return *given_;
+    if (!own_) own_ = std::make_unique<GeodesicSolver>(tracer_.mesh());
+    return *own_;
+  }
+
+ private:
+  const GeodesicSolver* given_;
+  const PathTracer& tracer_;
+  std::unique_ptr<GeodesicSolver> own_;
+};
+
 // A propagation from one end point, GSP's or the windows', and the view the walk reads.
 struct Field {
   GeodesicResult gsp;
@@ -59,12 +76,12 @@ struct Field {
   bool is_windows = false;
 };
 
-Field propagate(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+Field propagate(LazySolver& solver, const PathTracer& tracer, const Endpoint& from,
                 const std::vector<Endpoint>& to, const PathQueryOptions& options, PropagationStats& stats) {
   const TriangleMesh& mesh = tracer.mesh();
   Field f;
   if (options.method != PathMethod::windows) {
-    f.gsp = solver.compute({Source::at(from)}, field_options(mesh, to, options));
+    f.gsp = solver.get().compute({Source::at(from)}, field_options(mesh, to, options));
     stats = f.gsp.stats;
     f.view = std::make_unique<detail::GspSourceField>(f.gsp);
     return f;
@@ -182,7 +199,7 @@ void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const E
 // whose descent fallback fails too) is kept as an error: the far end's field may still give
 // the path.
 struct Query {
-  const GeodesicSolver& solver;
+  LazySolver& solver;
   const PathTracer& tracer;
   const TriangleMesh& mesh;
   const Endpoint& from;
@@ -248,7 +265,10 @@ void trace_back(Query& q, const PathQueryOptions& options, std::size_t k, PathQu
 // The windows cross only the edges the faces share; GSP also joins vertices at one position
 // (open seams, touching parts: gsp-core.md, bridges). An end the windows did not reach gets
 // GSP's A* path, where GSP reaches it.
-void astar_for_unreached(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+PathQueryResult query(LazySolver& solver, const PathTracer& tracer, const Endpoint& from,
+                      const std::vector<Endpoint>& to, const PathQueryOptions& options);
+
+void astar_for_unreached(LazySolver& solver, const PathTracer& tracer, const Endpoint& from,
                          const std::vector<Endpoint>& to, const PathQueryOptions& options, PathQueryResult& r) {
   std::vector<std::size_t> missing;
   for (std::size_t k = 0; k < to.size(); ++k)
@@ -258,17 +278,15 @@ void astar_for_unreached(const GeodesicSolver& solver, const PathTracer& tracer,
   for (std::size_t k : missing) ends.push_back(to[k]);
   PathQueryOptions astar = options;
   astar.method = PathMethod::astar;
-  const PathQueryResult g = shortest_paths(solver, tracer, from, ends, astar);
+  const PathQueryResult g = query(solver, tracer, from, ends, astar);
   for (std::size_t i = 0; i < missing.size(); ++i)
     if (g.paths[i].found()) r.paths[missing[i]] = g.paths[i], ++r.astar_fallbacks;
   r.compute_seconds += g.compute_seconds, r.trace_seconds += g.trace_seconds;
   r.edge_fallbacks += g.edge_fallbacks, r.reversed += g.reversed;
 }
 
-}  // namespace
-
-PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
-                               const std::vector<Endpoint>& to, const PathQueryOptions& options) {
+PathQueryResult query(LazySolver& solver, const PathTracer& tracer, const Endpoint& from,
+                      const std::vector<Endpoint>& to, const PathQueryOptions& options) {
   if (options.method == PathMethod::dijkstra_edges) throw InvalidInput("use edge_paths() for Dijkstra on edges");
   const TriangleMesh& mesh = tracer.mesh();
   PathQueryResult r;
@@ -285,6 +303,20 @@ PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& t
   edge_safety_net(mesh, tracer, from, to, field, q.invalid, q.failed, r);
   if (options.method == PathMethod::windows) astar_for_unreached(solver, tracer, from, to, options, r);
   return r;
+}
+
+}  // namespace
+
+PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
+                               const std::vector<Endpoint>& to, const PathQueryOptions& options) {
+  LazySolver lazy(&solver, tracer);
+  return query(lazy, tracer, from, to, options);
+}
+
+PathQueryResult shortest_paths(const PathTracer& tracer, const Endpoint& from, const std::vector<Endpoint>& to,
+                               const PathQueryOptions& options) {
+  LazySolver lazy(nullptr, tracer);
+  return query(lazy, tracer, from, to, options);
 }
 
 }  // namespace gsp::pathfinding

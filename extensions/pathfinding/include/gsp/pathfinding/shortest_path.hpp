@@ -70,6 +70,12 @@ struct PathQueryResult {
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
                                const std::vector<Endpoint>& to, const PathQueryOptions& options = {});
 
+// The same without a prepared GeodesicSolver (one-shot runs: gsp-path). PathMethod::windows
+// needs none; one is built from tracer.mesh() only when an end point needs GSP's A* path
+// (astar_fallbacks). For GSP's methods one is built first.
+PathQueryResult shortest_paths(const PathTracer& tracer, const Endpoint& from, const std::vector<Endpoint>& to,
+                               const PathQueryOptions& options = {});
+
 // The baseline: paths along edges from Dijkstra's distances (each vertex steps to the neighbour
 // that explains its distance). `mesh` is the one `tracer` was built for.
 PathQueryResult edge_paths(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
