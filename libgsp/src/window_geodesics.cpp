@@ -224,6 +224,14 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
     const Values nv_ = values(w, pts);
     bool better = false;
     for (int j = 0; j < kSamples; ++j) better |= nv_[j] < cur[j] * (1 - 1e-9);
+    if (!better && options.own_points) {
+      // No sample gains, but the part of the face the window sees may hold none (a sliver):
+      // compare at its own point.
+      const double own = value_at(w, w.mid);
+      double held = kInf;
+      for (unsigned i = 0; i < count[g]; ++i) held = std::min(held, value_at(slots[i], w.mid));
+      better = own < held * (1 - 1e-9);
+    }
     if (!better) return false;
     if (count[g] < k) {
       sent[g] &= std::uint8_t(~(1u << count[g]));
@@ -232,22 +240,34 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
       for (int j = 0; j < kSamples; ++j) cur[j] = std::min(cur[j], nv_[j]);
       return ++updates, true;
     }
-    // Full: keep the k of the k + 1 windows that leave the fewest samples unreached, then the
-    // lowest sum; the new one must be among them.
+    // Full: keep the k of the k + 1 windows that leave the fewest points unreached, then the
+    // lowest sum, over the samples and each window's own point; the new one must be among them.
     std::array<Values, 9> all;
     for (unsigned i = 0; i < k; ++i) all[i] = slot_v[i];
     all[k] = nv_;
+    std::array<std::array<double, 9>, 9> at_mid;   // at_mid[i][j]: window i at window j's point
+    const unsigned points = options.own_points ? k + 1 : 0;
+    for (unsigned i = 0; i <= k; ++i)
+      for (unsigned j = 0; j < points; ++j) {
+        const Window& wi = i < k ? slots[i] : w;
+        at_mid[i][j] = value_at(wi, j < k ? slots[j].mid : w.mid);
+      }
     int best_drop = -1;
-    std::pair<int, double> best_key{kSamples + 1, kInf};
+    std::pair<int, double> best_key{kSamples + 10, kInf};
     Values best_min{};
     for (unsigned drop = 0; drop <= k; ++drop) {
       Values m;
       m.fill(kInf);
+      std::array<double, 9> mm;
+      mm.fill(kInf);
       for (unsigned i = 0; i <= k; ++i)
-        if (i != drop)
+        if (i != drop) {
           for (int j = 0; j < kSamples; ++j) m[j] = std::min(m[j], all[i][j]);
+          for (unsigned j = 0; j < points; ++j) mm[j] = std::min(mm[j], at_mid[i][j]);
+        }
       std::pair<int, double> key{0, 0.0};
       for (double x : m) x < kInf ? key.second += x : ++key.first;
+      for (unsigned j = 0; j < points; ++j) mm[j] < kInf ? key.second += mm[j] : ++key.first;
       if (key < best_key) best_key = key, best_drop = int(drop), best_min = m;
     }
     if (best_drop == int(k)) return false;
@@ -334,8 +354,8 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
           t.s = map(src.s);
           if (src.rays)
             for (int r = 0; r < 2; ++r) t.w[r] = map(src.w[r]), t.u[r] = map(src.u[r]);
-          Window out[2];
-          const int n = step(t, ga, gb, gp, out);
+          Window out[kMaxStepOut];
+          const int n = step(t, ga, gb, gp, out, options.shadow_sources);
           for (int o = 0; o < n; ++o) changed |= offer(g, out[o]);
         }
         if (changed) push(g);

@@ -23,7 +23,7 @@ std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x) {
 
 }  // namespace
 
-int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth) {
+int step(const Window& win, V2 a, V2 b, V2 p, Window out[kMaxStepOut], bool shadow_sources, int depth) {
   const V2 ab = b - a;
   const double inside = cross(ab, p - a);
   int n = 0;
@@ -69,22 +69,41 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth) {
       sw.rays = true;
       sw.w[0] = w + (w - win.s), sw.w[1] = win.u[hidden_by];   // the ray's continuation, W -> U
     }
-    const int m = step(sw, a, b, p, out, depth + 1);
+    const int m = step(sw, a, b, p, out, shadow_sources, depth + 1);
     return m > 0 ? m : corners();
   }
   Window nw;
   nw.s = win.s, nw.sigma = win.sigma, nw.rays = true, nw.label = win.label;
   nw.w[0] = anchor[0], nw.w[1] = anchor[1];
+  nw.mid = a + (0.5 * (lo + hi)) * ab;
   const V2 ends[2] = {a, b};
+  bool moved[2] = {false, false};
   for (int e = 0; e < 2; ++e) {
     if (from_ray[e] < 0) {
       nw.shadow[e] = kWholeFace;
     } else {
       const auto [kind, u] = clip_shadow(win, from_ray[e], ends[e]);
       nw.shadow[e] = kind, nw.u[e] = u;
+      // The part of AB in the shadow of the ray's vertex W gets a window of its own from W,
+      // which can bend again further on (round a chain of reflex corners along a boundary);
+      // the shadow wedge would end at the next one.
+      const bool part = e == 0 ? lo > 1e-9 : hi < 1 - 1e-9;
+      moved[e] = shadow_sources && depth == 0 && kind != kNoShadow && part && win.shadow[from_ray[e]] != kNoShadow;
     }
   }
   if (has_width(nw)) out[n++] = nw;   // a window of no width sees nothing
+  for (int e = 0; e < 2; ++e) {
+    if (!moved[e]) continue;
+    const int r = from_ray[e];
+    const V2 w = win.w[r];
+    Window sw;
+    sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label, sw.mid = w;
+    if (win.shadow[r] == kBounded) {
+      sw.rays = true;
+      sw.w[0] = w + (w - win.s), sw.w[1] = win.u[r];   // the ray's continuation, W -> U
+    }
+    n += step(sw, a, b, p, out + n, shadow_sources, depth + 1);
+  }
   return n;
 }
 
@@ -118,7 +137,7 @@ int merge(const Window& x, const Window& y, Window* out) {
   const End lo = lx.angle <= ly.angle ? lx : ly, hi = hx.angle >= hy.angle ? hx : hy;
   if (hi.angle - lo.angle >= M_PI - 1e-6) return 0;
   Window m;
-  m.s = s, m.sigma = y.sigma, m.rays = true, m.label = y.label;
+  m.s = s, m.sigma = y.sigma, m.rays = true, m.label = y.label, m.mid = y.mid;
   for (int slot = 0; slot < 2; ++slot) {
     const End& e = slot == 0 ? lo : hi;
     m.w[slot] = e.win->w[e.ray], m.u[slot] = e.win->u[e.ray], m.shadow[slot] = e.win->shadow[e.ray];

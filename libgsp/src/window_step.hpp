@@ -35,11 +35,15 @@ struct Window {
   bool rays = false;   // false: S is a corner of the face and sees all of it
   V2 w[2], u[2];
   std::uint8_t shadow[2] = {kNoShadow, kNoShadow};
+  // A point of the face the window sees (the middle of what it sees of its entry edge; S for a
+  // corner window): a window that reaches no sample point of a sliver may still be the only
+  // one that reaches this part of it.
+  V2 mid;
 };
 
 inline Window corner_window(V2 corner, double value) {
   Window w;
-  w.s = corner, w.sigma = value;
+  w.s = corner, w.sigma = value, w.mid = corner;
   return w;
 }
 
@@ -102,9 +106,13 @@ inline bool origin_of(const Window& win, V2 p, V2* from, double* rest) {
   return true;
 }
 
-// The window `win` (in T's frame) through T's edge A B into T (P its third corner): at most
-// two new windows, written to out; their count.
-int step(const Window& win, V2 a, V2 b, V2 p, Window out[2], int depth = 0);
+// The window `win` (in T's frame) through T's edge A B into T (P its third corner): the new
+// windows, written to out; their count.
+constexpr int kMaxStepOut = 6;
+// shadow_sources: the part of AB in the shadow of a ray's vertex W also gets a window of its own
+// from W (which can bend again further on); without, only the shadow wedge carried by the new
+// window reaches it (one bend).
+int step(const Window& win, V2 a, V2 b, V2 p, Window out[kMaxStepOut], bool shadow_sources, int depth = 0);
 
 // Whether two windows have one source (S and sigma equal up to rounding).
 bool same_source(const Window& x, const Window& y);

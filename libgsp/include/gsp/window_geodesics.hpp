@@ -27,6 +27,16 @@ namespace gsp {
 
 struct WindowOptions {
   unsigned windows = 2;   // per face, 1 to 8
+  // Where a ray's vertex W hides part of the next edge, that part also gets a window of its own
+  // from W, which can bend again further on (round a chain of reflex corners along a boundary,
+  // as on a partial gear: 2.0 -> 0.02% MRE); otherwise only the shadow wedge the window carries
+  // reaches it, and it ends at the next corner. On the corpus with 3 windows: benign worst
+  // 0.047 -> 0.039%, malign worst 1.54 -> 0.70% (docs/benchmarks.md, session 15).
+  bool shadow_sources = true;
+  // A new window is also judged at a point it sees (the middle of what it sees of its entry
+  // edge), not only at the face's seven sample points: on a sliver the part a window reaches
+  // may hold no sample. With the above: benign worst 0.034%, malign 0.33%; 1.3x the time.
+  bool own_points = true;
   // Stop once these vertices are settled: the queue's least key is past the largest of their
   // values by two mean edge lengths (a face's key is its least value at seven sample points,
   // so a face can hold a value up to about an edge below its key). Up to 16 targets the order
