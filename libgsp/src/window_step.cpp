@@ -21,6 +21,18 @@ std::pair<std::uint8_t, V2> clip_shadow(const Window& win, int r, V2 x) {
   return {kBounded, u};
 }
 
+// The window whose source is ray r's vertex W, seeing what the shadow wedge there holds.
+Window shadow_source(const Window& win, int r) {
+  const V2 w = win.w[r];
+  Window sw;
+  sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label, sw.mid = w;
+  if (win.shadow[r] == kBounded) {
+    sw.rays = true;
+    sw.w[0] = w + (w - win.s), sw.w[1] = win.u[r];   // the ray's continuation, W -> U
+  }
+  return sw;
+}
+
 }  // namespace
 
 int step(const Window& win, V2 a, V2 b, V2 p, Window out[kMaxStepOut], bool shadow_sources, int depth) {
@@ -62,14 +74,7 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[kMaxStepOut], bool shad
     // through its shadow wedge (W a corner of the sending face sees all of AB); without a
     // wedge there, the bends at A and B.
     if (hidden_by < 0 || win.shadow[hidden_by] == kNoShadow || depth > 0) return corners();
-    const V2 w = win.w[hidden_by];
-    Window sw;
-    sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label;
-    if (win.shadow[hidden_by] == kBounded) {
-      sw.rays = true;
-      sw.w[0] = w + (w - win.s), sw.w[1] = win.u[hidden_by];   // the ray's continuation, W -> U
-    }
-    const int m = step(sw, a, b, p, out, shadow_sources, depth + 1);
+    const int m = step(shadow_source(win, hidden_by), a, b, p, out, shadow_sources, depth + 1);
     return m > 0 ? m : corners();
   }
   Window nw;
@@ -92,18 +97,8 @@ int step(const Window& win, V2 a, V2 b, V2 p, Window out[kMaxStepOut], bool shad
     }
   }
   if (has_width(nw)) out[n++] = nw;   // a window of no width sees nothing
-  for (int e = 0; e < 2; ++e) {
-    if (!moved[e]) continue;
-    const int r = from_ray[e];
-    const V2 w = win.w[r];
-    Window sw;
-    sw.s = w, sw.sigma = win.sigma + norm(w - win.s), sw.label = win.label, sw.mid = w;
-    if (win.shadow[r] == kBounded) {
-      sw.rays = true;
-      sw.w[0] = w + (w - win.s), sw.w[1] = win.u[r];   // the ray's continuation, W -> U
-    }
-    n += step(sw, a, b, p, out + n, shadow_sources, depth + 1);
-  }
+  for (int e = 0; e < 2; ++e)
+    if (moved[e]) n += step(shadow_source(win, from_ray[e]), a, b, p, out + n, shadow_sources, depth + 1);
   return n;
 }
 
