@@ -61,7 +61,9 @@ class Walk {
  private:
   bool reached(Index f) const { return field_.reached(f); }
 
-  // Barycentric coordinates of x (projected into f's plane); false for a degenerate face.
+  // Barycentric coordinates of x (projected into f's plane); false for a degenerate face: the
+  // sine of its smallest angle below 1e-12 (a CAD needle of aspect 8e6 is a face, its
+  // barycentrics good to about eps * aspect; at 1e-6 the walk stopped at such needles).
   bool bary_of(Index f, Vec3 x, Bary& b) const {
     const Triangle& t = mesh_.triangles[f];
     const Vec3 a = mesh_.positions[t[0]];
