@@ -20,11 +20,16 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <type_traits>
 
 namespace gsp::test {
 namespace {
 
 using pathfinding::Endpoint;
+
+// The tracer builds its window propagation on first use and stays movable (it is kept in
+// containers and returned from functions).
+static_assert(std::is_move_constructible_v<pathfinding::PathTracer>);
 
 // On a plane every window value is the straight line: the field's per-point source explains
 // the point's value (sigma + |x - S|), and a source inside a face gives Euclidean distances.

@@ -29,8 +29,9 @@ GeodesicPath PathTracer::trace(const WindowField& field, const Endpoint& end) co
 }
 
 const WindowGeodesics& PathTracer::windows() const {
-  std::call_once(windows_once_, [&] { windows_ = std::make_unique<WindowGeodesics>(mesh_, false); });
-  return *windows_;
+  LazyWindows& lazy = *windows_;
+  std::call_once(lazy.once, [&] { lazy.windows = std::make_unique<WindowGeodesics>(mesh_, false); });
+  return *lazy.windows;
 }
 
 GeodesicPath PathTracer::trace_in(const detail::SourceField& field, const Endpoint& end) const {

@@ -75,8 +75,12 @@ class PathTracer {
   Connectivity conn_;
   TraceOptions options_;
   double mean_edge_ = 1;
-  mutable std::once_flag windows_once_;
-  mutable std::unique_ptr<WindowGeodesics> windows_;
+  // Built on first use; behind a pointer so that the tracer stays movable.
+  struct LazyWindows {
+    std::once_flag once;
+    std::unique_ptr<WindowGeodesics> windows;
+  };
+  std::shared_ptr<LazyWindows> windows_ = std::make_shared<LazyWindows>();
 };
 
 }  // namespace gsp::pathfinding
