@@ -33,6 +33,9 @@ constexpr std::size_t kGoalTargets = 16;
 }  // namespace
 
 WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay)
+    : WindowGeodesics(mesh, build_connectivity(mesh), intrinsic_delaunay) {}
+
+WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, const Connectivity& conn, bool intrinsic_delaunay)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.num_vertices = mesh.positions.size();
@@ -45,13 +48,10 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaun
   intrinsic::snap_zero_lengths(length);
   m.input_length = length;
   m.mean_edge = intrinsic::mean_edge_length(length, skipped);
-  {
-    Connectivity conn = build_connectivity(mesh);
-    m.ring.resize(conn.num_halfedges());
-    for (Index h = 0; h < m.ring.size(); ++h) m.ring[h] = intrinsic::next_crossed(conn, skipped, length, h);
-    m.input_corner_begin = std::move(conn.vertex_corner_begin);
-    m.input_corners = std::move(conn.vertex_corners);
-  }
+  m.ring.resize(conn.num_halfedges());
+  for (Index h = 0; h < m.ring.size(); ++h) m.ring[h] = intrinsic::next_crossed(conn, skipped, length, h);
+  m.input_corner_begin = conn.vertex_corner_begin;
+  m.input_corners = conn.vertex_corners;
   m.triangles = mesh.triangles;
   if (intrinsic_delaunay) {
     // The same flips as GSP's solver (intrinsic_delaunay.hpp): slivers become well-shaped

@@ -30,7 +30,7 @@ GeodesicPath PathTracer::trace(const WindowField& field, const Endpoint& end) co
 
 const WindowGeodesics& PathTracer::windows() const {
   LazyWindows& lazy = *windows_;
-  std::call_once(lazy.once, [&] { lazy.windows = std::make_unique<WindowGeodesics>(mesh_, false); });
+  std::call_once(lazy.once, [&] { lazy.windows = std::make_unique<WindowGeodesics>(mesh_, conn_, false); });
   return *lazy.windows;
 }
 

@@ -17,22 +17,29 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// The propagation's options for paths to `to`: vertices as they are; a point inside a face is
-// settled once its face's corners are.
+// The vertices a propagation must settle for paths to `to`: vertices as they are; a point
+// inside a face is settled once its face's corners are.
+std::vector<Index> target_vertices(const TriangleMesh& mesh, const std::vector<Endpoint>& to) {
+  std::vector<Index> targets;
+  for (const Endpoint& e : to) {
+    check_endpoint(mesh, e);   // before indexing
+    if (e.is_vertex()) {
+      targets.push_back(e.element);
+    } else {
+      const Triangle& t = mesh.triangles[e.element];
+      targets.insert(targets.end(), t.begin(), t.end());
+    }
+  }
+  return targets;
+}
+
+// GSP's options for paths to `to`.
 GeodesicOptions field_options(const TriangleMesh& mesh, const std::vector<Endpoint>& to, const PathQueryOptions& options) {
   GeodesicOptions go;
   go.want_face_sources = true;   // the walk back needs every face's virtual source
   go.precision = options.precision;
   if (options.method != PathMethod::full) {
-    for (const Endpoint& e : to) {
-      check_endpoint(mesh, e);   // before indexing
-      if (e.is_vertex()) {
-        go.targets.push_back(e.element);
-      } else {
-        const Triangle& t = mesh.triangles[e.element];
-        go.targets.insert(go.targets.end(), t.begin(), t.end());
-      }
-    }
+    go.targets = target_vertices(mesh, to);
     go.goal_directed = options.method == PathMethod::astar && !go.targets.empty();
   }
   return go;
@@ -93,15 +100,7 @@ Field propagate(LazySolver& solver, const PathTracer& tracer, const Endpoint& fr
   // then left the corridor (61 corpus meshes: worst path 0.037 -> 2.0%, one-ended up to 11%).
   wo.shadow_sources = false;
   wo.own_points = false;
-  for (const Endpoint& e : to) {
-    check_endpoint(mesh, e);
-    if (e.is_vertex()) {
-      wo.targets.push_back(e.element);
-    } else {
-      const Triangle& t = mesh.triangles[e.element];
-      wo.targets.insert(wo.targets.end(), t.begin(), t.end());
-    }
-  }
+  wo.targets = target_vertices(mesh, to);
   WindowStats ws;
   try {
     f.windows = tracer.windows().field({Source::at(from)}, wo, &ws);

@@ -16,6 +16,7 @@
 // single-threaded, double precision, priority-queue order. Not used by GSP's solver:
 // gsp-geodesic --method windows and gsp-bench's `gsp-windows` / `gsp-windows3` run it, and
 // paths (gsp::pathfinding, PathMethod::windows, the default) walk back through a WindowField.
+#include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/mesh.hpp>
 
@@ -91,6 +92,9 @@ class WindowGeodesics {
   // does), their planar frames and the edge rings (non-manifold edges: every other face of the
   // edge is a neighbour, as in GSP). The mesh must outlive the object.
   explicit WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay = true);
+  // The same from the mesh's connectivity when the caller has built it already (a path
+  // tracer has).
+  WindowGeodesics(const TriangleMesh& mesh, const Connectivity& conn, bool intrinsic_delaunay);
   ~WindowGeodesics();
   WindowGeodesics(WindowGeodesics&&) noexcept;
   WindowGeodesics& operator=(WindowGeodesics&&) noexcept;
