@@ -61,7 +61,7 @@ bool should_weld(const LoadOptions& options, io::Format format) {
 }
 
 io::ReadResult read_checked(const std::string& path, const LoadOptions& options) {
-  io::ReadResult r = io::read_mesh(path);
+  io::ReadResult r = io::read_mesh(path, io::ReadOptions{options.read_threads});
   // The readers validate already; this keeps the promise for any reader that forgets, and
   // turns the library's message into one that names the file.
   try {

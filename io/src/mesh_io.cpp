@@ -4,6 +4,7 @@
 
 #include "parse_util.hpp"
 #include "readers.hpp"
+#include "text_pieces.hpp"
 #include "writers.hpp"
 
 #include <sys/stat.h>
@@ -66,15 +67,16 @@ std::string read_whole_file(const std::string& path) {
 
 }  // namespace detail
 
-ReadResult read_mesh(const std::string& path) {
+ReadResult read_mesh(const std::string& path, const ReadOptions& options) {
   const Format format = format_from_path(path);
   if (format == Format::unknown || format == Format::txt)
     throw IoError(path, "", "unknown mesh format (expected .obj .ply .off .stl .gltf .glb .xyz)");
   const std::string bytes = detail::read_whole_file(path);
   if (bytes.empty()) throw IoError(path, "", "empty file");
+  const unsigned threads = detail::reading_threads(options, bytes.size());
   switch (format) {
-    case Format::obj: return detail::read_obj(path, bytes);
-    case Format::ply: return detail::read_ply(path, bytes);
+    case Format::obj: return detail::read_obj(path, bytes, threads);
+    case Format::ply: return detail::read_ply(path, bytes, threads);
     case Format::off: return detail::read_off(path, bytes);
     case Format::stl: return detail::read_stl(path, bytes);
     case Format::xyz: return detail::read_xyz(path, bytes);

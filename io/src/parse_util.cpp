@@ -77,16 +77,21 @@ double TokenScanner::need_double(const char* what) {
   return v;
 }
 
+bool parse_int_or_whole(std::string_view s, long long& out) {
+  if (parse_int(s, out)) return true;
+  // Some writers store integers as "3.0"; accept them when they are whole numbers.
+  double d;
+  if (parse_double(s, d) && std::isfinite(d) && std::abs(d) < 9e15 && d == std::floor(d)) {
+    out = static_cast<long long>(d);
+    return true;
+  }
+  return false;
+}
+
 long long TokenScanner::need_int(const char* what) {
   const std::string_view t = need(what);
   long long v;
-  if (!parse_int(t, v)) {
-    // Some writers store integers as "3.0"; accept them when they are whole numbers.
-    double d;
-    if (parse_double(t, d) && std::isfinite(d) && std::abs(d) < 9e15 && d == std::floor(d))
-      return static_cast<long long>(d);
-    fail("'" + std::string(t.substr(0, 40)) + "' is not an integer (" + what + ")");
-  }
+  if (!parse_int_or_whole(t, v)) fail("'" + std::string(t.substr(0, 40)) + "' is not an integer (" + what + ")");
   return v;
 }
 

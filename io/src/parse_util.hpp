@@ -20,6 +20,8 @@ std::string byte_at(std::size_t byte);   // "byte N"
 // Number parsing without locale or exceptions; false when `s` is not entirely a number.
 bool parse_double(std::string_view s, double& out);
 bool parse_int(std::string_view s, long long& out);
+// An integer, or a whole number written as a decimal ("3.0", as some writers store indices).
+bool parse_int_or_whole(std::string_view s, long long& out);
 
 // Splits `line` into whitespace-separated tokens (appended to `out` after clearing it).
 void split(std::string_view line, std::vector<std::string_view>& out);

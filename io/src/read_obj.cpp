@@ -1,8 +1,11 @@
 // Wavefront OBJ: `v` and `f` carry the mesh; everything else (vt, vn, vp, g, o, s, usemtl,
 // mtllib, l, p, comments) is skipped. Face corners may be `i`, `i/t`, `i//n` or `i/t/n`, with
-// negative indices counting back from the last vertex defined so far.
+// negative indices counting back from the last vertex defined so far. A big file is read on
+// several threads first (read_obj_parallel.cpp); this serial reader names every error.
+#include "obj_parts.hpp"
 #include "parse_util.hpp"
 #include "readers.hpp"
+#include "text_pieces.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,18 +23,41 @@ std::uint8_t unit_to_byte(double c) {
 
 }  // namespace
 
-ReadResult read_obj(const std::string& path, const std::string& bytes) {
+void finish_obj(const std::string& path, ObjExtras& x, ReadResult& r) {
+  TriangleMesh& m = r.mesh;
+  r.info.file_vertices = m.positions.size();
+  if (m.positions.empty() && r.info.file_faces == 0) throw IoError(path, "", "no vertices or faces (not an OBJ file?)");
+  if (x.max_index >= static_cast<long long>(m.positions.size()))
+    throw IoError(path, line_at(x.max_index_line),
+                  "vertex index " + std::to_string(x.max_index + 1) + " out of range (" +
+                      std::to_string(m.positions.size()) + " vertices)");
+  if (x.all_colored && !x.colors.empty()) {
+    // Values above 1 mean the writer used 0..255.
+    double top = 0;
+    for (const auto& c : x.colors)
+      for (double v : c)
+        if (std::isfinite(v)) top = std::max(top, v);
+    const double scale = top > 1.0 ? 1.0 / 255.0 : 1.0;
+    r.attributes.colors.reserve(x.colors.size());
+    for (const auto& c : x.colors)
+      r.attributes.colors.push_back({unit_to_byte(c[0] * scale), unit_to_byte(c[1] * scale), unit_to_byte(c[2] * scale), 255});
+  }
+  for (const auto& [key, count] : x.skipped)
+    r.info.notes.push_back("ignored " + std::to_string(count) + " '" + key + "' line(s)");
+}
+
+ReadResult read_obj(const std::string& path, const std::string& bytes, unsigned threads) {
   ReadResult r;
   r.info.format = Format::obj;
+  if (threads > 1) {
+    ReadResult fast = r;
+    if (read_obj_parallel(bytes, threads, fast)) return fast;
+  }
   TriangleMesh& m = r.mesh;
   LineScanner lines(path, bytes);
   std::vector<std::string_view> tok;
   std::vector<Index> corners;
-  std::vector<std::array<double, 3>> colors;   // as read; kept only if every vertex has one
-  bool all_colored = true;
-  long long max_index = -1;          // largest resolved index, checked once all vertices are known
-  std::size_t max_index_line = 0;
-  std::map<std::string, std::size_t> skipped;   // keyword -> count, reported as notes
+  ObjExtras x;
 
   std::string_view line;
   while (lines.next(line)) {
@@ -51,9 +77,9 @@ ReadResult read_obj(const std::string& path, const std::string& bytes) {
       double c[3];
       if (tok.size() >= 7 && parse_double(tok[4], c[0]) && parse_double(tok[5], c[1]) &&
           parse_double(tok[6], c[2])) {
-        if (all_colored) colors.push_back({c[0], c[1], c[2]});
+        if (x.all_colored) x.colors.push_back({c[0], c[1], c[2]});
       } else {
-        all_colored = false;
+        x.all_colored = false;
       }
     } else if (key == "f") {
       ++r.info.file_faces;
@@ -71,9 +97,9 @@ ReadResult read_obj(const std::string& path, const std::string& bytes) {
                      " points before the first vertex (" + std::to_string(m.positions.size()) + " defined so far)");
         if (resolved >= static_cast<long long>(kInvalidIndex))
           lines.fail("face " + std::to_string(r.info.file_faces - 1) + ": vertex index " + std::to_string(idx) + " out of range");
-        if (resolved > max_index) {
-          max_index = resolved;
-          max_index_line = lines.line_number();
+        if (resolved > x.max_index) {
+          x.max_index = resolved;
+          x.max_index_line = lines.line_number();
         }
         corners.push_back(static_cast<Index>(resolved));
       }
@@ -83,29 +109,10 @@ ReadResult read_obj(const std::string& path, const std::string& bytes) {
       if (corners.size() > 3) ++r.info.polygons_split;
       add_fan(m.triangles, corners.data(), corners.size());
     } else {
-      ++skipped[std::string(key.substr(0, 16))];
+      ++x.skipped[std::string(key.substr(0, 16))];
     }
   }
-
-  r.info.file_vertices = m.positions.size();
-  if (m.positions.empty() && r.info.file_faces == 0) throw IoError(path, "", "no vertices or faces (not an OBJ file?)");
-  if (max_index >= static_cast<long long>(m.positions.size()))
-    throw IoError(path, line_at(max_index_line),
-                  "vertex index " + std::to_string(max_index + 1) + " out of range (" +
-                      std::to_string(m.positions.size()) + " vertices)");
-  if (all_colored && !colors.empty()) {
-    // Values above 1 mean the writer used 0..255.
-    double top = 0;
-    for (const auto& c : colors)
-      for (double x : c)
-        if (std::isfinite(x)) top = std::max(top, x);
-    const double scale = top > 1.0 ? 1.0 / 255.0 : 1.0;
-    r.attributes.colors.reserve(colors.size());
-    for (const auto& c : colors)
-      r.attributes.colors.push_back({unit_to_byte(c[0] * scale), unit_to_byte(c[1] * scale), unit_to_byte(c[2] * scale), 255});
-  }
-  for (const auto& [key, count] : skipped)
-    r.info.notes.push_back("ignored " + std::to_string(count) + " '" + key + "' line(s)");
+  finish_obj(path, x, r);
   return r;
 }
 

@@ -129,6 +129,7 @@ void run(cli::Context& ctx, const Options& o) {
 
   cli::LoadOptions load = o.load;
   load.require_faces = o.domain == "mesh";   // auto and points accept a cloud
+  load.read_threads = o.threads == 1 ? 1 : 0;   // --threads 1: one thread for everything
   cli::LoadedMesh in = cli::load_input(ctx, o.input, load);
   if (wants_line_sources(o)) {
     if (metric.wanted()) throw cli::UsageError("--metric does not apply to line sources");

@@ -52,9 +52,18 @@ struct ReadResult {
   VertexAttributes attributes;
 };
 
+struct ReadOptions {
+  // Threads for parsing big text files (PLY ascii and OBJ of 1 MB or more): 0 = the
+  // machine's cores, 1 = the calling thread only. The result does not depend on it.
+  unsigned threads = 0;
+  // Smallest file parsed on several threads (smaller ones: starting threads costs more than it
+  // gains). The differential fuzz targets set 0 to send every input through both parsers.
+  std::size_t parallel_from_bytes = std::size_t(1) << 20;
+};
+
 // Throws gsp::IoError (cannot open, unknown format, malformed, truncated, NaN/Inf coordinates,
 // index out of range). Points without faces are returned as a point cloud.
-ReadResult read_mesh(const std::string& path);
+ReadResult read_mesh(const std::string& path, const ReadOptions& options = {});
 
 struct WriteOptions {
   bool ascii = false;   // PLY: binary little-endian by default
