@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace gsp::detail {
@@ -80,3 +81,32 @@ TEST(CoreStraightLineBound, SeveralThreadsGiveTheValuesOfOne) {
 
 }  // namespace
 }  // namespace gsp::detail
+
+// Many sources go through a k-d tree: the same bound and the same source as a scan over all of
+// them, the first in source order on ties (sources at one place, bounds equal through offsets).
+TEST(CoreStraightLineBound, NearestOfManySourcesIsTheScansNearest) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const bool offsets : {false, true}) {
+    std::vector<gsp::detail::SourcePoint> sources;
+    for (int i = 0; i < 700; ++i) {
+      const gsp::Vec3 p{u(rng), u(rng), 0.1 * u(rng)};
+      const double o = offsets ? 0.2 * (u(rng) + 1) : 0.0;
+      sources.push_back({p, o});
+      if (i % 50 == 0) sources.push_back({p, o});   // the same source twice: the first wins
+    }
+    const gsp::detail::NearestSource nearest(sources);
+    for (int k = 0; k < 3000; ++k) {
+      const gsp::Vec3 x = k < 40 ? sources[std::size_t(k) * 17].position : gsp::Vec3{1.5 * u(rng), 1.5 * u(rng), u(rng)};
+      double bound = std::numeric_limits<double>::infinity();
+      gsp::Index index = gsp::kInvalidIndex;
+      for (std::size_t s = 0; s < sources.size(); ++s) {
+        const double b = gsp::distance(x, sources[s].position) + sources[s].offset;
+        if (b < bound) bound = b, index = gsp::Index(s);
+      }
+      const auto [got_bound, got_index] = nearest(x);
+      ASSERT_EQ(got_bound, bound) << "point " << k << " offsets " << offsets;
+      ASSERT_EQ(got_index, index) << "point " << k << " offsets " << offsets;
+    }
+  }
+}

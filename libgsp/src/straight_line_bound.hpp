@@ -15,6 +15,7 @@
 //
 // Not with SolverOptions::edge_lengths: a metric's lengths are not bounded by 3D segments.
 #include "index_maps.hpp"
+#include "nearest_source.hpp"
 #include "parallel_ranges.hpp"
 
 #include <gsp/geodesics.hpp>
@@ -25,12 +26,6 @@
 #include <vector>
 
 namespace gsp::detail {
-
-// A source as the bound needs it: where it is in 3D, and its offset.
-struct SourcePoint {
-  Vec3 position;
-  double offset = 0;
-};
 
 // The sources as 3D points. `mesh` is the solver's reordered mesh, `maps` takes input
 // indices to it (sources name input vertices and faces; the corner order of a face is kept).
@@ -75,13 +70,14 @@ inline std::vector<float> scaled_sources(const std::vector<SourcePoint>& sources
 // propagation's precision `Real` holds it, rounded up, so both queries give the same numbers.
 // Returns how many were raised by more than 1e-6 of the bound (the rest is rounding of exact
 // values). Cost: a squared distance per vertex (to its labelled source, in the order of the
-// arrays) and, for the few clearly below it, one distance per source; a full query runs it on
-// its threads.
+// arrays) and, for the few clearly below it, a search of the sources (nearest_source.hpp); a
+// full query runs it on its threads.
 template <class Real, class Value>
 std::size_t raise_to_straight_line(std::size_t n, const Index* ids, const std::vector<Vec3>& positions, Value* d,
                                    Index* label, double mean_edge, bool scaled,
                                    const std::vector<SourcePoint>& sources, unsigned threads = 1) {
   if (sources.empty()) return 0;
+  const NearestSource nearest_source(sources);
   std::atomic<std::size_t> raised{0};
   // Several threads (a full query's): one range of values each.
   for_ranges(threads, n, [&](std::size_t begin, std::size_t end, unsigned) {
@@ -112,12 +108,7 @@ std::size_t raise_to_straight_line(std::size_t n, const Index* ids, const std::v
           continue;
         }
       }
-      double bound = std::numeric_limits<double>::infinity();
-      Index nearest = l;
-      for (std::size_t s = 0; s < sources.size(); ++s) {
-        const double b = distance(x, sources[s].position) + sources[s].offset;
-        if (b < bound) bound = b, nearest = Index(s);
-      }
+      const auto [bound, nearest] = nearest_source(x);
       if (di >= bound) continue;
       raised_here += di < bound * (1 - 1e-6);
       raise_to(bound, nearest);
