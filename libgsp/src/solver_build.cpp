@@ -4,6 +4,7 @@
 // big meshes pairs of these steps run side by side. Queries are in geodesic_solver.cpp.
 #include "intrinsic_delaunay.hpp"
 #include "parallel_propagation.hpp"
+#include "parallel_ranges.hpp"
 #include "side_by_side.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
@@ -40,15 +41,18 @@ void GeodesicSolver::Impl::build_lengths(const std::vector<double>& edge_lengths
   mean_edge = detail::mean_edge_length(input.length, skipped_face);
 }
 
-void GeodesicSolver::Impl::build_links(const Connectivity& conn) {
+void GeodesicSolver::Impl::build_links(const Connectivity& conn, unsigned threads) {
   const std::size_t nh = conn.num_halfedges();
   if (nh > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
   // A halfedge of a skipped face, a loop or a zero-length edge is a ring of its own; the
   // others link to the next member of their radial ring that is not in a skipped face
-  // (itself on a boundary). One pass in halfedge order, no per-edge lists.
+  // (itself on a boundary). One pass in halfedge order (in ranges on `threads` threads), no
+  // per-edge lists.
   std::vector<Index> plain(nh);
-  for (Index h = 0; h < nh; ++h) plain[h] = intrinsic::next_crossed(conn, skipped_face, input.length, h);
-  input.set_direction_bits(std::move(plain));
+  detail::for_ranges(threads, nh, [&](std::size_t begin, std::size_t end, unsigned) {
+    for (Index h = Index(begin); h < Index(end); ++h) plain[h] = intrinsic::next_crossed(conn, skipped_face, input.length, h);
+  });
+  input.set_direction_bits(std::move(plain), threads);
 }
 
 void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
@@ -192,7 +196,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
                            timings.connectivity = lap();
                          });
   }
-  build_links(conn);
+  build_links(conn, two ? 2 : 1);
   timings.input_tables = lap();
   if (!two || !options.intrinsic_delaunay) {
     analyse_vertices(conn);

@@ -103,17 +103,30 @@ struct Triangulation {
   }
 
   // Takes the plain radial links (halfedge indices) and adds the direction bits in place.
-  void set_direction_bits(std::vector<Index>&& plain_ring) {
+  // threads > 1: the links in ranges on that many threads, written apart from the plain ones
+  // (a copy of the table while it runs, where one thread rewrites it in place).
+  void set_direction_bits(std::vector<Index>&& plain_ring, unsigned threads = 1) {
     const std::vector<Triangle>& tris = triangles();
     auto dir = [&](Index h) { return tris[face_of(h)][corner_of(h)] < tris[face_of(h)][corner_of(next_halfedge(h))]; };
+    auto link = [&](Index h, Index g, Index back) {
+      const bool pair = g != h && back == h;
+      return g == h ? h
+                    : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0) |
+                       (pair ? detail::kRingPair : 0));
+    };
+    if (detail::ranges_used(threads, plain_ring.size()) > 1) {
+      const std::vector<Index> plain = std::move(plain_ring);
+      ring.resize(plain.size());
+      detail::for_ranges(threads, plain.size(), [&](std::size_t begin, std::size_t end, unsigned) {
+        for (Index h = Index(begin); h < Index(end); ++h) ring[h] = link(h, plain[h], plain[plain[h]]);
+      });
+      return;
+    }
     ring = std::move(plain_ring);
     // Links before h already carry bits: masked, every entry reads as its plain index.
     for (Index h = 0; h < Index(ring.size()); ++h) {
       const Index g = ring[h] & detail::kRingIndexMask;
-      const bool pair = g != h && (ring[g] & detail::kRingIndexMask) == h;
-      ring[h] = g == h ? h
-                       : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0) |
-                          (pair ? detail::kRingPair : 0));
+      ring[h] = link(h, g, ring[g] & detail::kRingIndexMask);
     }
   }
 
@@ -195,7 +208,7 @@ struct GeodesicSolver::Impl {
   // The input triangulation: skipped faces, lengths (and the mean edge) from the mesh alone,
   // then the radial links from the connectivity.
   void build_lengths(const std::vector<double>& edge_lengths);
-  void build_links(const Connectivity& conn);
+  void build_links(const Connectivity& conn, unsigned threads);
   // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
   // triangulation and releases the rest of `conn`.
   void analyse_vertices(Connectivity& conn);
