@@ -5,7 +5,6 @@
 #include "obj_parts.hpp"
 #include "parse_util.hpp"
 #include "readers.hpp"
-#include "text_pieces.hpp"
 
 #include <algorithm>
 #include <cmath>

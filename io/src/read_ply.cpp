@@ -6,7 +6,6 @@
 #include "parse_util.hpp"
 #include "ply_header.hpp"
 #include "readers.hpp"
-#include "text_pieces.hpp"
 
 #include <algorithm>
 #include <cmath>
