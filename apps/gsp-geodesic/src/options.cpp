@@ -73,7 +73,8 @@ void add_options(CLI::App& app, Options& o) {
                "the matrix of distances between the --source-vertex vertices (.txt: spaces, .csv: commas)");
   app.add_option("--threads", o.threads, "threads: for --separate / --matrix the queries in parallel (default: all); "
                  "for one field the query's own (default: automatic, all on meshes of 200k+ faces, one source "
-                 "included); the preparation uses two on meshes of 200k+ faces unless this is 1");
+                 "included); the preparation uses two on meshes of 200k+ faces, and a text file of 1 MB+ is parsed on all "
+                 "cores, unless this is 1");
   add_metric_option(app, o.metric);
   render::add_preview_options(app, o.preview, "the field with iso-lines, sources in red");
   cli::add_load_options(app, o.load);
