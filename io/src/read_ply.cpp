@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace gsp::io::detail {
@@ -74,6 +75,16 @@ struct Reader {
   std::string describe(std::size_t mark) const { return enc == PlyEncoding::ascii ? line_at(mark) : byte_at(mark); }
   std::size_t remaining() const { return enc == PlyEncoding::ascii ? text->remaining_bytes() : bin->remaining(); }
 };
+
+// An index as read, for a message: a float list can hold values no integer type holds (casting
+// 4e22 to long long is undefined; a fuzz finding), and NaN.
+std::string index_text(double idx) {
+  if (!std::isfinite(idx)) return "-1";
+  if (std::abs(idx) < 9e18 && idx == std::floor(idx)) return std::to_string(static_cast<long long>(idx));
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", idx);
+  return text;
+}
 
 // Fewest bytes one instance of `e` can occupy; used to reject absurd counts before reserving.
 std::uint64_t min_instance_bytes(const PlyElement& e, PlyEncoding enc) {
@@ -143,8 +154,7 @@ void read_faces(const std::string& path, const PlyElement& e, std::uint64_t num_
       for (std::uint64_t c = 0; c < n; ++c) {
         const double idx = rd.scalar(p.type);
         if (!(idx >= 0 && idx < static_cast<double>(num_vertices)) || idx != std::floor(idx))
-          throw IoError(path, rd.describe(where), "face " + std::to_string(i) + ": vertex index " +
-                                         std::to_string(static_cast<long long>(std::isfinite(idx) ? idx : -1)) +
+          throw IoError(path, rd.describe(where), "face " + std::to_string(i) + ": vertex index " + index_text(idx) +
                                          " out of range (" + std::to_string(num_vertices) + " vertices)");
         corners.push_back(static_cast<Index>(idx));
       }
