@@ -29,8 +29,10 @@ std::size_t count_line_ends(std::string_view t) {
 
 unsigned reading_threads(const ReadOptions& options, std::size_t bytes) {
   if (bytes < options.parallel_from_bytes) return 1;
-  if (options.threads > 0) return options.threads;
-  return std::max(1u, std::thread::hardware_concurrency());
+  const unsigned wanted = options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  // At least half the threshold per thread: a 1 MB file is not cut in 64 on a big machine.
+  const std::size_t most = std::max<std::size_t>(1, bytes / std::max<std::size_t>(1, options.parallel_from_bytes / 2));
+  return unsigned(std::min<std::size_t>(wanted, most));
 }
 
 std::vector<TextPiece> cut_at_lines(std::string_view text, unsigned parts) {

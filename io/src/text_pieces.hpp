@@ -13,7 +13,8 @@
 namespace gsp::io::detail {
 
 // Threads for parsing `bytes` of text: 1 below options.parallel_from_bytes, else
-// options.threads, or the machine's cores when that is 0.
+// options.threads (the machine's cores when that is 0), but no more than leave each thread half
+// of parallel_from_bytes.
 unsigned reading_threads(const ReadOptions& options, std::size_t bytes);
 
 struct TextPiece {
