@@ -54,7 +54,8 @@ struct ReadResult {
 
 struct ReadOptions {
   // Threads for parsing big text files (PLY ascii and OBJ of 1 MB or more): 0 = the
-  // machine's cores, 1 = the calling thread only. The result does not depend on it.
+  // machine's cores, 1 = the calling thread only; never more than one per half of
+  // parallel_from_bytes of the file. The result does not depend on it.
   unsigned threads = 0;
   // Smallest file parsed on several threads (smaller ones: starting threads costs more than it
   // gains). The differential fuzz targets set 0 to send every input through both parsers.
