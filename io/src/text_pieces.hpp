@@ -7,7 +7,9 @@
 #include <gsp/io/mesh_io.hpp>
 
 #include <cstddef>
+#include <exception>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 namespace gsp::io::detail {
@@ -58,10 +60,31 @@ inline bool next_token(std::string_view line, std::size_t& pos, std::string_view
 }
 
 // Runs work(i) for every i < n, each on its own thread (0 on the caller's); returns when all
-// are done and rethrows the first failure.
+// are done and rethrows the first failure. (libgsp's for_ranges does the same for the core,
+// which io cannot include: it is internal to gsp::core.)
 template <class Work>
-void for_each_piece(std::size_t n, Work&& work);
+void for_each_piece(std::size_t n, Work&& work) {
+  std::vector<std::exception_ptr> failed(n);
+  std::vector<std::thread> threads;
+  threads.reserve(n > 0 ? n - 1 : 0);
+  for (std::size_t i = 1; i < n; ++i)
+    threads.emplace_back([&, i] {
+      try {
+        work(i);
+      } catch (...) {
+        failed[i] = std::current_exception();
+      }
+    });
+  if (n > 0) {
+    try {
+      work(0);
+    } catch (...) {
+      failed[0] = std::current_exception();
+    }
+  }
+  for (std::thread& t : threads) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+}
 
 }  // namespace gsp::io::detail
-
-#include "text_pieces_impl.hpp"
