@@ -1,4 +1,5 @@
 #include "boundary_collapse.hpp"
+#include "locked_vertices.hpp"
 #include "triangle_geometry.hpp"
 
 #include <algorithm>
@@ -15,7 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 std::size_t collapse_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, double below_angle_deg,
-                                    double max_deviation, int passes) {
+                                    double max_deviation, int passes, const std::vector<bool>* fixed) {
   if (curves.loops.empty()) return 0;
   const double below = below_angle_deg * kPi / 180.0;
   const double fold_cos = std::cos(40.0 * kPi / 180.0);
@@ -59,6 +60,7 @@ std::size_t collapse_boundary_edges(TriangleMesh& m, const BoundaryCurves& curve
         const Triangle t = m.triangles[f];
         const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
         if (next_b[a] != b || locked[a] || locked[b] || locked[c] || out_count[c] != 0) continue;
+        if (is_locked(fixed, a) || is_locked(fixed, b)) continue;   // a feature curve's sample
         const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c];
         const double at_c = angle_at(pc, pa, pb);
         if (at_c >= below || at_c > angle_at(pa, pb, pc) || at_c > angle_at(pb, pc, pa)) continue;

@@ -5,6 +5,7 @@
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace gsp::cvt::detail {
 
@@ -19,6 +20,6 @@ namespace gsp::cvt::detail {
 // The removed vertex is left unreferenced (the caller drops it). Returns the number of
 // collapses.
 std::size_t collapse_boundary_edges(TriangleMesh& mesh, const BoundaryCurves& curves, double below_angle_deg,
-                                    double max_deviation, int passes = 3);
+                                    double max_deviation, int passes = 3, const std::vector<bool>* fixed = nullptr);
 
 }  // namespace gsp::cvt::detail

@@ -1,4 +1,5 @@
 #include "boundary_fit.hpp"
+#include "locked_vertices.hpp"
 #include "triangle_geometry.hpp"
 
 #include <algorithm>
@@ -14,7 +15,8 @@ constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
-std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves, double min_angle_deg) {
+std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves, double min_angle_deg,
+                                   const std::vector<bool>* locked) {
   if (curves.loops.empty()) return 0;
   const double floor_angle = min_angle_deg * kPi / 180.0;
   const std::size_t V = m.num_vertices();
@@ -50,7 +52,7 @@ std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves
   };
   std::size_t snapped = 0;
   for (Index v = 0; v < V; ++v) {
-    if (boundary_length[v] == 0) continue;
+    if (boundary_length[v] == 0 || is_locked(locked, v)) continue;
     std::size_t l = 0;
     double s = 0, d = 0;
     if (!curves.project(m.positions[v], l, s, d) || d <= 1e-3 * boundary_length[v]) continue;
@@ -66,7 +68,7 @@ std::size_t snap_boundary_vertices(TriangleMesh& m, const BoundaryCurves& curves
 }
 
 std::size_t split_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, double max_chord, double min_angle_deg,
-                                 int passes) {
+                                 int passes, const std::vector<bool>* locked) {
   if (curves.loops.empty() || !(max_chord > 0)) return 0;
   const double floor_angle = min_angle_deg * kPi / 180.0;
   std::size_t total = 0;
@@ -80,7 +82,7 @@ std::size_t split_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, 
       for (Index i = 0; i < 3; ++i) {
         const Triangle t = m.triangles[f];
         const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
-        if (directed.count(edge_key(b, a))) continue;
+        if (directed.count(edge_key(b, a)) || is_locked_edge(locked, a, b)) continue;
         std::size_t la = 0, lb = 0;
         double sa = 0, sb = 0, da = 0, db = 0;
         const double len = distance(m.positions[a], m.positions[b]);

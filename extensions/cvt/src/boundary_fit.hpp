@@ -7,6 +7,7 @@
 #include <gsp/mesh.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace gsp::cvt::detail {
 
@@ -15,7 +16,8 @@ namespace gsp::cvt::detail {
 // of the working mesh stays inside) moves to the nearest point of the curve when nothing
 // folds and no angle of its triangles falls below min(before, `min_angle_deg`). Returns the
 // number of vertices moved.
-std::size_t snap_boundary_vertices(TriangleMesh& mesh, const BoundaryCurves& curves, double min_angle_deg);
+std::size_t snap_boundary_vertices(TriangleMesh& mesh, const BoundaryCurves& curves, double min_angle_deg,
+                                   const std::vector<bool>* locked = nullptr);
 
 // A boundary edge whose chord is farther than `max_chord` from the stretch of the surface's
 // boundary curve it spans is split at the curve's point farthest from the chord (a new vertex,
@@ -25,6 +27,6 @@ std::size_t snap_boundary_vertices(TriangleMesh& mesh, const BoundaryCurves& cur
 // corners of the outline: that is where the bunny's Hausdorff distance was. Returns the number
 // of splits.
 std::size_t split_boundary_edges(TriangleMesh& mesh, const BoundaryCurves& curves, double max_chord, double min_angle_deg,
-                                 int passes = 3);
+                                 int passes = 3, const std::vector<bool>* locked = nullptr);
 
 }  // namespace gsp::cvt::detail

@@ -1,5 +1,6 @@
 #include "cap_flips.hpp"
 #include "flips.hpp"
+#include "locked_vertices.hpp"
 #include "triangle_geometry.hpp"
 
 #include <gsp/connectivity.hpp>
@@ -85,7 +86,7 @@ bool CapFlipCheck::keeps_surface(Index f, Index g, Index a, Index b, Index cc, I
 std::size_t remove_caps_keeping_surface(SmoothingContext& c, double max_deviation) {
   CapFlipCheck check(c, max_deviation);
   auto keeps_surface = [&](Index f, Index g, Index a, Index b, Index cc, Index d) {
-    return check.keeps_surface(f, g, a, b, cc, d);
+    return !is_locked_edge(c.locked, a, b) && check.keeps_surface(f, g, a, b, cc, d);
   };
   return remove_caps(c.m, 120.0, keeps_surface, [&] { check.flipped(); });
 }

@@ -1,4 +1,5 @@
 #include "flips.hpp"
+#include "locked_vertices.hpp"
 #include "triangle_geometry.hpp"
 
 
@@ -38,7 +39,8 @@ struct DirectedEdges {
 
 }  // namespace
 
-std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int max_passes) {
+std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int max_passes,
+                             const std::vector<bool>* locked) {
   const double cos_limit = std::cos(max_normal_angle_deg * 3.14159265358979323846 / 180.0);
   DirectedEdges directed(m);
   std::size_t flips = 0;
@@ -48,6 +50,7 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
       for (Index i = 0; i < 3; ++i) {
         const Triangle t = m.triangles[f];
         const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3];
+        if (is_locked_edge(locked, a, b)) continue;
         const auto it = directed.map.find(edge_key(b, a));
         if (it == directed.map.end()) continue;   // boundary or inconsistently oriented
         const Index g = it->second / 3, j = it->second % 3;

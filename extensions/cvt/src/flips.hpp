@@ -3,6 +3,7 @@
 #include <gsp/mesh.hpp>
 
 #include <functional>
+#include <vector>
 
 namespace gsp::cvt::detail {
 
@@ -11,7 +12,8 @@ namespace gsp::cvt::detail {
 // the two new triangles keep the orientation of the old ones (no fold), and the new edge does
 // not exist yet (the mesh stays manifold). Vertices and topology do not change. Returns the
 // number of flips.
-std::size_t improve_by_flips(TriangleMesh& mesh, double max_normal_angle_deg, int max_passes = 20);
+std::size_t improve_by_flips(TriangleMesh& mesh, double max_normal_angle_deg, int max_passes = 20,
+                             const std::vector<bool>* locked = nullptr);
 
 // Caps across creases: a triangle with an angle above `cap_angle_deg` (its vertex nearly on
 // the opposite edge) has that edge flipped when the flip raises the smaller of the pair's

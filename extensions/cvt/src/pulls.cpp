@@ -1,5 +1,6 @@
 #include "pulls.hpp"
 #include "far_points.hpp"
+#include "locked_vertices.hpp"
 #include "move_checks.hpp"
 #include "triangle_geometry.hpp"
 
@@ -69,7 +70,7 @@ std::size_t pull_round(SmoothingContext& c, double pull_distance) {
     Pull best;
     best.d = f.d;
     for (Index v : c.m.triangles[f.face])
-      if (!locked[v] && !c.rings.on_boundary(v)) try_pulling(c, v, z, c.sample_normal[f.w], floor, pull_distance, best);
+      if (!locked[v] && !c.rings.on_boundary(v) && !is_locked(c.locked, v)) try_pulling(c, v, z, c.sample_normal[f.w], floor, pull_distance, best);
     if (best.v == kInvalidIndex) continue;
     c.move(best.v, best.y);
     ++pulled;

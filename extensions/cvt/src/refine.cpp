@@ -3,6 +3,7 @@
 #include "far_points.hpp"
 #include "insertion_checks.hpp"
 #include "point_grid.hpp"
+#include "locked_vertices.hpp"
 #include "triangle_geometry.hpp"
 
 #include <gsp/cvt/closest_point_index.hpp>
@@ -171,6 +172,7 @@ bool FarPointInserter::best_split(const FarPoint& fp, int round, Vec3 z, Split& 
     for (int k = -1; k < 3; ++k) {
       if (k >= 0) {
         if (i > 0 || bary[k] > 0.25) continue;
+        if (is_locked_edge(p_.locked, t[(k + 1) % 3], t[(k + 2) % 3])) continue;
         const Index g = em_.face_with(t[(k + 2) % 3], t[(k + 1) % 3]);
         if (g == kInvalidIndex || g == face || stamp_[g] == round) continue;
       }
@@ -235,6 +237,7 @@ std::size_t FarPointInserter::flip_around(Index v) {
       Triangle t = m_.triangles[f];
       while (t[2] != v) t = {t[1], t[2], t[0]};
       const Index a = t[0], b = t[1];
+      if (is_locked_edge(p_.locked, a, b)) continue;
       const Index g = em_.face_with(b, a);
       if (g == kInvalidIndex) continue;
       const Triangle& tg = m_.triangles[g];

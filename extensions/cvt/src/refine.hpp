@@ -26,6 +26,7 @@ struct RefineParams {
   // them and checks the floor after). Points marked in `skip` (per surface vertex) are left out.
   double slack_deg = 0;
   const std::vector<bool>* skip = nullptr;
+  const std::vector<bool>* locked = nullptr;   // no split or flip of an edge between two (locked_vertices.hpp)
   const ClosestPointIndex* surface_index = nullptr;   // over `surface`, or nullptr: built here
 };
 

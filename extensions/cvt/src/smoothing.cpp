@@ -2,6 +2,7 @@
 
 #include "cap_flips.hpp"
 #include "flips.hpp"
+#include "locked_vertices.hpp"
 #include "pulls.hpp"
 #include "smoothing_context.hpp"
 #include "vertex_search.hpp"
@@ -24,7 +25,7 @@ std::size_t move_pass(SmoothingContext& c, const SmoothParams& p, std::vector<bo
   const double below = p.below_angle * kPi / 180.0;
   std::size_t moved = 0;
   for (Index v = 0; v < c.m.num_vertices(); ++v) {
-    if (c.rings.empty(v) || !dirty[v]) continue;
+    if (c.rings.empty(v) || !dirty[v] || is_locked(c.locked, v)) continue;
     dirty[v] = false;
     Move move;
     if (!find_move(c, v, below, p.max_deviation, move)) continue;
@@ -41,7 +42,7 @@ std::size_t move_pass(SmoothingContext& c, const SmoothParams& p, std::vector<bo
 std::size_t flip_pass(SmoothingContext& c, double flip_max_normal_angle, std::vector<bool>& dirty) {
   if (flip_max_normal_angle < 0) return 0;
   const std::vector<Triangle> before_flips = c.m.triangles;
-  const std::size_t flips = improve_by_flips(c.m, flip_max_normal_angle);
+  const std::size_t flips = improve_by_flips(c.m, flip_max_normal_angle, 20, c.locked);
   for (std::size_t f = 0; f < c.m.num_faces(); ++f)
     if (c.m.triangles[f] != before_flips[f])
       for (Index w : c.m.triangles[f]) dirty[w] = true;
@@ -56,6 +57,7 @@ SmoothCounts smooth_vertices(TriangleMesh& m, const TriangleMesh& surface, const
   std::unique_ptr<ClosestPointIndex> own_index;
   if (!p.surface_index) own_index = std::make_unique<ClosestPointIndex>(surface);
   SmoothingContext c(m, surface, p.surface_index ? *p.surface_index : *own_index, samples, curves);
+  c.locked = p.locked;
   std::vector<bool> dirty(m.num_vertices(), true);
   if (p.only) dirty = *p.only, dirty.resize(m.num_vertices(), false);
   if (p.flip_max_normal_angle >= 0 && p.cap_flips) counts.flips += remove_caps_keeping_surface(c, p.max_deviation);

@@ -27,6 +27,7 @@ struct SmoothParams {
   // refine.hpp tries the new vertices' neighbourhoods only, without caps.
   bool cap_flips = true;
   const std::vector<bool>* only = nullptr;
+  const std::vector<bool>* locked = nullptr;   // never moved, their edges never flipped (locked_vertices.hpp)
   // An index over `surface` built by the caller (nullptr: built here; the working mesh's takes
   // a few tenths of a second).
   const ClosestPointIndex* surface_index = nullptr;

@@ -34,6 +34,7 @@ struct SmoothingContext {
   // Boundary vertices on the curves: loop (size_t(-1): none) and arc length.
   std::vector<std::size_t> loop_of;
   std::vector<double> arc;
+  const std::vector<bool>* locked = nullptr;   // locked_vertices.hpp
 
   // The unit normal of the surface at a point of it (its face's); zero off the surface.
   Vec3 surface_normal(const ClosestPoint& sp) const;
