@@ -68,6 +68,8 @@ def run_mesh(args, path):
         stats = os.path.join(tmp, "stats.json")
         cmd = [args.compare, path, "--vertices", str(args.vertices), "--hausdorff-samples",
                str(args.hausdorff_samples), "--stats", stats, "--quiet"]
+        if args.feature_angle is not None:
+            cmd += ["--feature-angle", str(args.feature_angle)]
         start = time.monotonic()
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
@@ -99,7 +101,8 @@ def run_mesh(args, path):
         if "components" in r:   # gsp: what happened to each input component
             outcomes = {}
             for c in r["components"]:
-                outcomes[c["outcome"]] = outcomes.get(c["outcome"], 0) + 1
+                key = c["outcome"] + ("_without_features" if c.get("features_dropped") else "")
+                outcomes[key] = outcomes.get(key, 0) + 1
             row[prefix + "_component_outcomes"] = " ".join(f"{k}:{v}" for k, v in sorted(outcomes.items()))
             row[prefix + "_kept_reasons"] = "; ".join(sorted({c["reason"] for c in r["components"] if c["reason"]}))[:300]
     if row.get("gsp_status") == "ok" and row.get("cgal_status") == "ok" and row["cgal_seconds"] > 0:
@@ -244,6 +247,7 @@ def main():
     ap.add_argument("--markdown", help="write the aggregate here ('-': stdout)")
     ap.add_argument("--compare", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin",
                                                       "gsp-cvt-compare"))
+    ap.add_argument("--feature-angle", type=float, help="gsp-cvt's --feature-angle (default: gsp-cvt's default)")
     ap.add_argument("--timeout", type=float, default=300, help="seconds per mesh (default 300)")
     ap.add_argument("--hausdorff-samples", type=int, default=50000)
     ap.add_argument("--only", nargs="*", default=[], help="run only meshes whose name contains one of these")

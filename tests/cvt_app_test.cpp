@@ -139,6 +139,34 @@ TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {
   EXPECT_FALSE(fs::exists(dir / "b.ply"));
 }
 
+TEST(CvtApp, FeatureAngleKeepsTheBoxEdges) {
+  // A box as 12 triangles: with --feature-angle its 12 edges are curves with fixed sites and
+  // its 8 corners come out as vertices; the remesh is then the box itself.
+  ScratchDir dir("cvt");
+  const auto in = dir / "box.off", out = dir / "r.ply";
+  write_file(in, "OFF\n8 12 0\n0 0 0\n2 0 0\n0 1 0\n2 1 0\n0 0 1\n2 0 1\n0 1 1\n2 1 1\n"
+                 "3 0 2 3\n3 0 3 1\n3 4 5 7\n3 4 7 6\n3 0 1 5\n3 0 5 4\n3 2 6 7\n3 2 7 3\n3 0 4 6\n3 0 6 2\n"
+                 "3 1 3 7\n3 1 7 5\n");
+  const RunResult r = run(kApp + " " + quote(in.string()) + " --vertices 300 --feature-angle 40 --hausdorff-samples 5000 --stats - -o " +
+                              quote(out.string()),
+                          dir, kRemeshLimit);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue stats = parse_json(r.out);
+  EXPECT_EQ(stats["settings"]["feature_angle"].num, 40);
+  EXPECT_EQ(stats["operations"]["feature_curves"].num, 12);
+  EXPECT_GT(stats["operations"]["feature_sites"].num, 8);
+  EXPECT_LT(stats["quality"]["hausdorff"]["percent_of_diagonal"].num, 1e-6);
+  ASSERT_EQ(stats["components"].items.size(), 1u);
+  EXPECT_FALSE(stats["components"].items[0]["features_dropped"].b);
+  const io::ReadResult mesh = io::read_mesh(out.string());
+  std::size_t corners = 0;
+  for (const Vec3& p : mesh.mesh.positions)
+    corners += (p.x == 0 || p.x == 2) && (p.y == 0 || p.y == 1) && (p.z == 0 || p.z == 1);
+  EXPECT_EQ(corners, 8u);
+  EXPECT_EQ(run(kApp + " " + quote(in.string()) + " --vertices 300 --feature-angle 200 -o " + quote(out.string()), dir).exit_code,
+            2);   // out of range
+}
+
 TEST(CvtApp, UsageErrorsExit2) {
   ScratchDir dir("cvt");
   const std::string o = " -o " + quote((dir / "r.obj").string());

@@ -116,3 +116,40 @@ def test_remesh_warns_for_the_components_it_keeps():
     kept = BV + [4, 0, 0]
     assert all(np.any(np.all(np.isclose(RV, p), axis=1)) for p in kept)   # the book, as it was
     assert len(RF) > 100                                                   # and the sphere, remeshed
+
+
+def _box():
+    # [0,2]x[0,1]x[0,1] as 12 triangles, outward.
+    V = np.array([[(i & 1) * 2.0, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], dtype=float)
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+    F = np.array([t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))])
+    return V, F
+
+
+def test_remesh_keeps_feature_curves():
+    V, F = _box()
+    V2, F2 = gsp.remesh(V, F, vertices=300, feature_angle=40)
+    # Every corner is a vertex and every vertex is on the box.
+    assert all(np.min(np.linalg.norm(V2 - c, axis=1)) < 1e-9 for c in V)
+    on_face = (np.isclose(V2, 0) | np.isclose(V2, [2, 1, 1])).any(axis=1)
+    assert on_face.all()
+    # Each box edge is a chain of edges: its vertices, in order along it, are joined pairwise.
+    edges = {tuple(sorted(e)) for e in np.concatenate([F2[:, [0, 1]], F2[:, [1, 2]], F2[:, [2, 0]]]).tolist()}
+    size = np.array([2.0, 1.0, 1.0])
+    for axis in range(3):
+        u, w = (axis + 1) % 3, (axis + 2) % 3
+        for a in (0, 1):
+            for b in (0, 1):
+                on = np.where(np.isclose(V2[:, u], a * size[u]) & np.isclose(V2[:, w], b * size[w]))[0]
+                on = on[np.argsort(V2[on, axis])]
+                assert len(on) >= 3
+                assert all(tuple(sorted((int(p), int(q)))) in edges for p, q in zip(on[:-1], on[1:]))
+    # Without features the same remesh cuts the corners.
+    V3, _ = gsp.remesh(V, F, vertices=300)
+    assert not all(np.min(np.linalg.norm(V3 - c, axis=1)) < 1e-9 for c in V)
+
+
+def test_feature_angle_out_of_range():
+    V, F = _box()
+    with pytest.raises(ValueError, match="feature_angle"):
+        gsp.remesh(V, F, vertices=100, feature_angle=-1)

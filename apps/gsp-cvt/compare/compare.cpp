@@ -33,6 +33,7 @@ struct Options {
   std::string input, save_prefix;
   std::size_t vertices = 0;
   int cvt_iterations = 50, cgal_iterations = 5, count_runs = 3;
+  double feature_angle = 0;
   std::size_t hausdorff_samples = 200000;
   cli::LoadOptions load;
 };
@@ -82,6 +83,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   cvt::SurfaceRemeshOptions so;
   so.cvt.sites = wanted;
   so.cvt.max_iterations = o.cvt_iterations;
+  so.cvt.feature_angle = o.feature_angle;
   const auto t0 = Clock::now();
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
   row.mesh = r.mesh;
@@ -102,6 +104,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
     j["sites"] = c.sites;
     j["outcome"] = cvt::outcome_name(c.outcome);
     j["reason"] = c.reason;
+    j["features_dropped"] = c.features_dropped;
     row.components.push_back(std::move(j));
   }
   return row;
@@ -176,6 +179,7 @@ int main(int argc, char** argv) {
         app.add_option("INPUT", o.input, "input mesh")->required();
         app.add_option("--vertices", o.vertices, "vertex count for both methods")->required()->check(CLI::PositiveNumber);
         app.add_option("--cvt-iterations", o.cvt_iterations, "gsp-cvt Lloyd iteration cap (default 50)");
+        app.add_option("--feature-angle", o.feature_angle, "gsp-cvt's --feature-angle (default 0: off)");
         app.add_option("--cgal-iterations", o.cgal_iterations, "CGAL remeshing iterations (default 5)");
         app.add_option("--count-runs", o.count_runs, "CGAL runs to match the vertex count (default 3; the last is timed)")
             ->check(CLI::PositiveNumber);

@@ -28,7 +28,7 @@ struct Options {
   std::string input, output, regions, edge_length, init = "poisson";
   std::size_t vertices = 0;
   int iterations = 50;
-  double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0;
+  double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   bool no_fix = false, no_flip = false, no_smooth = false, ascii = false;
@@ -55,6 +55,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--regions", o.regions,
                  "also write the input mesh with an int vertex `label` (its region) and a colour per region "
                  "(.ply .obj .off .glb .gltf)");
+  app.add_option("--feature-angle", o.feature_angle,
+                 "keep sharp features: edges whose faces' normals differ by more than this many degrees form "
+                 "curves kept as chains of edges, their corners as vertices (0 = off; default 0)")
+      ->check(CLI::Range(0.0, 180.0));
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
   app.add_flag("--no-flip", o.no_flip, "write the restricted Delaunay dual as it is, without the angle-raising edge flips");
   app.add_flag("--no-smooth", o.no_smooth,
@@ -98,6 +102,7 @@ void run(cli::Context& ctx, const Options& o) {
                                      : cvt::InitialSites::poisson;
   co.seed = o.seed;
   co.fix_regions = !o.no_fix;
+  co.feature_angle = o.feature_angle;
   ctx.settings()["method"] = "lloyd-gsp";
   if (o.vertices) ctx.settings()["vertices"] = o.vertices;
   else ctx.settings()["edge_length"] = co.edge_length;
@@ -107,6 +112,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["init"] = o.init;
   ctx.settings()["seed"] = o.seed;
   ctx.settings()["fix_regions"] = co.fix_regions;
+  ctx.settings()["feature_angle"] = o.feature_angle;
   ctx.settings()["flip_edges"] = !o.no_flip;
   ctx.settings()["smooth"] = !o.no_smooth;
   ctx.settings()["smooth_below"] = o.smooth_below;

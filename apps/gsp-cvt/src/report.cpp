@@ -44,6 +44,9 @@ void report_cvt(cli::Context& ctx, const cvt::SurfaceRemeshResult& cvt) {
   res["area"] = cvt.area;
   cli::Json& ops = ctx.operations();
   ops["initial_sites"] = s.initial_sites;
+  ops["feature_sites"] = s.feature_sites;
+  ops["feature_curves"] = s.feature_curves;
+  ops["short_feature_curves"] = s.short_feature_curves;
   ops["sites_added"] = s.sites_added;
   ops["sites_relocated"] = s.sites_relocated;
   ops["split_regions"] = s.split_regions;
@@ -100,6 +103,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
     j["boundary_loops"] = c.boundary_loops;
     j["sites"] = c.sites;
     j["faces_flipped"] = c.faces_flipped;
+    j["features_dropped"] = c.features_dropped;
     j["output_vertices"] = c.output_vertices;
     j["output_faces"] = c.output_faces;
     j["outcome"] = cvt::outcome_name(c.outcome);
@@ -113,6 +117,11 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (!kept.empty() && kept.size() == r.components.size())
     throw Error("no component could be remeshed; " + kept.front() + (kept.size() > 1 ? "; ..." : ""));
   for (std::size_t i = 0; i < kept.size() && i < 20; ++i) ctx.note("kept as it is: " + kept[i]);
+  std::size_t dropped = 0;
+  for (const cvt::ComponentReport& c : r.components) dropped += c.features_dropped && c.outcome == cvt::ComponentOutcome::remeshed;
+  if (dropped)
+    ctx.note(std::to_string(dropped) + " components remeshed without their feature curves (with them the remesh did not "
+                                       "have the component's topology)");
   if (r.vertices_split)
     ctx.note(std::to_string(r.vertices_split) +
              " vertices where fans of faces only touched were split (one per fan) before remeshing");

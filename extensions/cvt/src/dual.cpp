@@ -56,7 +56,11 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     }
   r.mesh.triangles = std::move(d.triangles);
   r.stats.unused_sites = cvt.sites.size() - r.vertex_site.size();
-  if (options.flip_edges) r.stats.flips = detail::improve_by_flips(r.mesh, options.flip_max_normal_angle);
+  // The feature curves' samples and the edges between them stay as the dual made them.
+  std::vector<bool> locked(r.vertex_site.size(), false);
+  for (std::size_t v = 0; v < locked.size(); ++v) locked[v] = cvt.sites[r.vertex_site[v]].fixed;
+  const std::vector<bool>* lock = std::count(locked.begin(), locked.end(), true) ? &locked : nullptr;
+  if (options.flip_edges) r.stats.flips = detail::improve_by_flips(r.mesh, options.flip_max_normal_angle, 20, lock);
   if (options.smooth && !r.mesh.triangles.empty()) {
     detail::SmoothParams sp;
     sp.passes = options.smooth_passes;
@@ -64,16 +68,17 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     sp.max_deviation = options.smooth_max_deviation * cvt.diagonal;
     sp.flip_max_normal_angle = options.flip_edges ? options.flip_max_normal_angle : -1.0;
     sp.pull_distance = options.pull_distance * cvt.diagonal;
+    sp.locked = lock;
     // The working mesh is the input's surface; projecting onto the input itself (rebuilt from
     // the working faces' parents, far fewer faces) is faster but ends in lower minimum angles
     // (docs/cvt.md, the post-pass's cost).
     const TriangleMesh& surface = cvt.working.mesh;
     const detail::BoundaryCurves curves(surface);
-    r.stats.boundary_snaps = detail::snap_boundary_vertices(r.mesh, curves, 25.0);
+    r.stats.boundary_snaps = detail::snap_boundary_vertices(r.mesh, curves, 25.0, lock);
     r.stats.boundary_collapses =
-        detail::collapse_boundary_edges(r.mesh, curves, std::min(options.smooth_below_angle, 30.0), sp.max_deviation);
+        detail::collapse_boundary_edges(r.mesh, curves, std::min(options.smooth_below_angle, 30.0), sp.max_deviation, 3, lock);
     r.stats.boundary_splits =
-        detail::split_boundary_edges(r.mesh, curves, options.boundary_chord * cvt.diagonal, 30.0);
+        detail::split_boundary_edges(r.mesh, curves, options.boundary_chord * cvt.diagonal, 30.0, 3, lock);
     r.vertex_site.resize(r.mesh.num_vertices(), kInvalidIndex);
     // One index over the surface for all the steps below (the working mesh: 0.3-0.8 M faces).
     const ClosestPointIndex surface_index(surface);
@@ -89,6 +94,7 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     rp.max_inserted = std::size_t(options.refine_max_fraction * double(cvt.sites.size()));
     rp.max_deviation = sp.max_deviation;
     rp.surface_index = &surface_index;
+    rp.locked = lock;
     const detail::SettledRefinement added = detail::refine_and_settle(r.mesh, surface, curves, sp, rp);
     r.stats.far_point_insertions = added.inserted;
     r.stats.flips += added.flips;

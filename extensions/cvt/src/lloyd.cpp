@@ -2,6 +2,7 @@
 // to its region's centroid projected back onto the region, keep the step only if the energy
 // went down. See docs/cvt.md for the choices made here.
 #include "boundary_loops.hpp"
+#include "feature_sites.hpp"
 #include "junctions.hpp"
 #include "regions.hpp"
 #include "working_geometry.hpp"
@@ -23,6 +24,12 @@ namespace {
 
 using namespace detail;
 using Clock = std::chrono::steady_clock;
+
+// Width of the band around feature curves that belongs to their samples, in site spacings:
+// about where the regions of the first row of free sites would begin anyway (half the distance
+// to a row of sites 0.87 spacings off the curve), so the band claims little that the Voronoi
+// regions would not have given it, and a strip narrower than 0.8 spacings has no free site.
+constexpr double kFeatureBand = 0.4;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -54,6 +61,7 @@ class Lloyd {
     t0 = Clock::now();
     e.energy = cvt_energy(g_.mesh, e.result);
     e.label = e.result.face_source;
+    if (features_) claim_feature_band(g_, *features_, e.label);
     const std::vector<Index> site_face = faces_of(sites);
     // Pieces of a region a few faces large are artefacts of face-granular labels (a face whose
     // centroid is barely on the other side): they take their neighbours' label.
@@ -73,6 +81,10 @@ class Lloyd {
     std::vector<SurfaceSite> out(sites.size());
     for (Index s = 0; s < sites.size(); ++s) {
       const Index k = e.components.main[s];
+      if (sites[s].fixed) {
+        out[s] = sites[s];
+        continue;
+      }
       if (k == kInvalidIndex || !(e.components.area[k] > 0)) {
         out[s] = sites[s];   // lost its region: fix_regions relocates it
         continue;
@@ -114,7 +126,7 @@ class Lloyd {
     // Sites that lost their whole region (another site took their face): to the farthest points.
     std::vector<Index> lost;
     for (Index s = 0; s < n; ++s)
-      if (c.main[s] == kInvalidIndex) lost.push_back(s);
+      if (c.main[s] == kInvalidIndex && !sites[s].fixed) lost.push_back(s);
     if (!lost.empty()) {
       std::vector<Index> order(g_.mesh.num_faces());
       std::iota(order.begin(), order.end(), Index(0));
@@ -188,7 +200,7 @@ class Lloyd {
     std::vector<SurfaceSite> out = sites;
     for (Index s = 0; s < sites.size(); ++s) {
       const Index k = e.components.main[s];
-      if (k == kInvalidIndex || !touches_boundary(e, s, k)) continue;
+      if (sites[s].fixed || k == kInvalidIndex || !touches_boundary(e, s, k)) continue;
       const SurfaceSite q = project(e, s, k, sites[s].position, true);
       if (q.point.element != kInvalidIndex) out[s] = q;
     }
@@ -288,7 +300,7 @@ class Lloyd {
       }
       for (std::size_t r = 0; r < seq.size(); ++r) {
         const Index l = seq[r].first;
-        if (l == kInvalidIndex) continue;
+        if (l == kInvalidIndex || is_fixed(l)) continue;
         if (++runs[l] == 2) {
           const std::size_t end = r + 1 < seq.size() ? seq[r + 1].second : loop.size();
           second_run_halfedge[l] = loop[(seq[r].second + end) / 2];
@@ -334,6 +346,10 @@ class Lloyd {
 
  public:
   std::vector<std::vector<Index>> loops_;
+  const FeatureSites* features_ = nullptr;   // its sites are sites [0, size)
+
+ private:
+  bool is_fixed(Index label) const { return features_ && label < features_->sites.size(); }
 
  private:
   const WorkingGeometry& g_;
@@ -358,6 +374,7 @@ Site to_input(const WorkingMesh& w, const SurfaceSite& s) {
     for (int j = 0; j < 3; ++j) out.point.barycentric[j] += s.point.barycentric[k] * w.corner_bary[f][k][j];
   out.position = s.position;
   out.on_boundary = s.on_boundary;
+  out.fixed = s.fixed;
   return out;
 }
 
@@ -464,12 +481,26 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   stats.timings.prepare = seconds_since(t0);
 
   t0 = Clock::now();
-  std::vector<SurfaceSite> sites = initial_sites(mesh, out.working, g, n, options);
+  // The feature curves' samples come first and take their share of the budget.
+  FeatureSites features;
+  if (options.feature_angle > 0) {
+    const double spacing = std::sqrt(2.0 * g.total_area / (std::sqrt(3.0) * double(n)));
+    features = feature_sites(g, options.feature_angle, spacing, kFeatureBand);
+    stats.feature_sites = features.sites.size();
+    stats.feature_curves = features.curves;
+    stats.short_feature_curves = features.dropped_curves;
+  }
+  std::vector<SurfaceSite> sites = features.sites;
+  if (n > sites.size()) {
+    const std::vector<SurfaceSite> free = initial_sites(mesh, out.working, g, n - sites.size(), options);
+    sites.insert(sites.end(), free.begin(), free.end());
+  }
   stats.initial_sites = sites.size();
   stats.timings.initial = seconds_since(t0);
 
   Lloyd lloyd(g, solver, options, stats);
   lloyd.loops_ = boundary_loops(g);
+  if (!features.sites.empty()) lloyd.features_ = &features;
   Evaluation e = lloyd.evaluate(sites);
   if (options.fix_regions && lloyd.fix(e, sites)) e = lloyd.evaluate(sites);
   if (options.boundary_sites && !lloyd.loops_.empty()) {

@@ -28,6 +28,9 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.closing_sites += s.closing_sites;
   sum.closing_rounds = std::max(sum.closing_rounds, s.closing_rounds);
   sum.closing_steps = std::max(sum.closing_steps, s.closing_steps);
+  sum.feature_sites += s.feature_sites;
+  sum.feature_curves += s.feature_curves;
+  sum.short_feature_curves += s.short_feature_curves;
   sum.working_faces += s.working_faces;
   sum.subdivisions = std::max(sum.subdivisions, s.subdivisions);
   sum.bisections += s.bisections;
@@ -191,15 +194,29 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
         CvtOptions c = co;
         c.sites = n;
         c.edge_length = 0;
-        auto t0 = Clock::now();
-        const CvtResult cvt = compute_cvt(oriented, c);
-        rep.cvt_seconds = seconds_since(t0);
-        t0 = Clock::now();
-        RemeshResult r = restricted_delaunay(cvt, options.remesh);
-        rep.remesh_seconds = seconds_since(t0);
-        out.remesh_seconds += rep.remesh_seconds;
+        auto attempt = [&](CvtResult& cvt, RemeshResult& r, std::string& why) {
+          auto t0 = Clock::now();
+          cvt = compute_cvt(oriented, c);
+          rep.cvt_seconds += seconds_since(t0);
+          t0 = Clock::now();
+          r = restricted_delaunay(cvt, options.remesh);
+          rep.remesh_seconds += seconds_since(t0);
+          return same_topology_per_component(oriented, r.mesh, &why);
+        };
+        CvtResult cvt;
+        RemeshResult r;
         std::string why;
-        if (!same_topology_per_component(oriented, r.mesh, &why)) {
+        bool ok = attempt(cvt, r, why);
+        if (!ok && c.feature_angle > 0 && cvt.stats.feature_sites > 0) {
+          // The feature curves' bands leave the closing rounds nothing to add where the dual
+          // goes wrong inside them (a junction in a strip between two curves): the component
+          // is remeshed again without its features rather than kept as it was.
+          c.feature_angle = 0;
+          rep.features_dropped = true;
+          ok = attempt(cvt, r, why);
+        }
+        out.remesh_seconds += rep.remesh_seconds;
+        if (!ok) {
           keep(ComponentOutcome::kept_topology, "the remesh had " + why);
         } else {
           for (std::size_t v = 0; v < input.num_vertices(); ++v)

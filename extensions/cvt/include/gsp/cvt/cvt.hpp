@@ -77,6 +77,12 @@ struct CvtOptions {
   // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
   // mesh to have the input's boundary.
   bool boundary_sites = true;
+  // Sharp features kept (0: off): edges whose faces' normals differ by more than this many
+  // degrees form crease curves; each curve at least one site spacing long gets fixed sites at
+  // even arc-length steps of about the spacing, from corner to corner (the 1D CVT of the
+  // curve), and the faces around it belong to those sites, so the remesh has each curve as a
+  // chain of edges and every corner as a vertex. The fixed sites count towards `sites`.
+  double feature_angle = 0;
   IterationFn on_iteration;
 };
 
@@ -87,6 +93,7 @@ struct Site {
   SurfacePoint point = SurfacePoint::in_face(kInvalidIndex, {1, 0, 0});
   Vec3 position;
   bool on_boundary = false;
+  bool fixed = false;   // a sample of a sharp feature curve (CvtOptions::feature_angle): never moves
 };
 
 struct CvtTimings {   // seconds
@@ -105,6 +112,9 @@ struct CvtStats {
   std::size_t closing_sites = 0;   // of those, added after the iterations (CvtOptions::closing_rounds)
   int closing_rounds = 0;
   int closing_steps = 0;           // Lloyd steps kept after the closing
+  std::size_t feature_sites = 0;   // fixed on the crease curves (CvtOptions::feature_angle)
+  std::size_t feature_curves = 0;  // curves kept (of which too short to keep:)
+  std::size_t short_feature_curves = 0;
   std::size_t working_faces = 0;
   int subdivisions = 0;
   std::size_t bisections = 0;      // long edges split after the uniform subdivision

@@ -47,6 +47,9 @@ struct ComponentReport {
   std::size_t boundary_loops = 0;
   std::size_t sites = 0;                   // asked for (0 when kept before the CVT)
   std::size_t faces_flipped = 0;           // by the orientation fix
+  // The remesh with CvtOptions::feature_angle did not have the component's topology, so it was
+  // remeshed without its features (sharp edges chamfered as with feature_angle = 0).
+  bool features_dropped = false;
   std::size_t output_vertices = 0, output_faces = 0;
   ComponentOutcome outcome = ComponentOutcome::remeshed;
   std::string reason;                      // empty when remeshed
