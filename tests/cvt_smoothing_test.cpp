@@ -99,9 +99,12 @@ TEST(CvtSmoothing, FalconThinFoldsLoseTheirCaps) {
   // the insertions at far input points (RemeshOptions::refine_distance) put vertices on them.
   // Hausdorff (30,000 samples) 1.166% -> 1.135% without them, -> 1.012% with them (40
   // insertions, the cap of 2% of the sites; 20.34 degrees).
+  // Since the long edges are bisected on the input before the uniform split, the dual itself
+  // has no caps left here (21.0 degrees before the post-pass, 20.9 after: the insertions may
+  // lower the minimum by their slack), so this checks that the post-pass keeps it.
   const Measured m = check_smoothing(io::read_mesh(test::shared_mesh("falconstatue.obj")).mesh, 2000);
-  EXPECT_GE(m.min_angle_after, 5.0);
-  EXPECT_GT(m.min_angle_after, m.min_angle_before + 3.0);
+  EXPECT_GE(m.min_angle_after, 15.0);
+  EXPECT_GE(m.min_angle_after, m.min_angle_before - 1.0);
   EXPECT_GT(m.insertions, 0u);
   EXPECT_LT(m.hausdorff_after, 0.0108);
 }

@@ -449,10 +449,14 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     area += 0.5 * norm(cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]));
   if (!(area > 0)) throw InvalidInput("cvt: the mesh has no area");
   const std::size_t n = site_count(options, area);
-  int levels = 0;
-  while (levels < options.max_subdivisions &&
-         double(mesh.num_faces()) * std::pow(4.0, levels) < double(options.min_faces_per_site) * double(n))
-    ++levels;
+  // Uniform 1-to-4 levels until the working mesh has min_faces_per_site faces per site.
+  auto levels_for = [&](std::size_t faces) {
+    int l = 0;
+    while (l < options.max_subdivisions && double(faces) * std::pow(4.0, l) < double(options.min_faces_per_site) * double(n))
+      ++l;
+    return l;
+  };
+  int levels = levels_for(mesh.num_faces());
   // Too many sites for the split mesh even with every edge counted apart (E <= 3F): say so
   // before splitting, which at 10 levels of a large input would take long.
   const double k = std::pow(2.0, levels) - 1;
@@ -461,14 +465,26 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   if (double(n) > vertex_bound)
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
                        " times) has at most " + std::to_string(std::size_t(vertex_bound)) + " vertices");
-  out.working = subdivide(mesh, levels);
+  // Faces longer than half the site spacing could hold two sites: bisect them. First on the
+  // input, to the length that the uniform levels will halve down to the bound (split uniformly
+  // first, every sliver of a CAD export would become four slivers to bisect, and the bounded
+  // bisection ran out with a third of the working faces still too long); the levels are
+  // chosen again for the faces the bisection made. Then on the split mesh, for what is left.
+  // Bounded, so that a degenerate input cannot blow up.
+  const double max_edge = 0.5 * std::sqrt(area / double(n));
+  out.working = subdivide(mesh, 0);
+  const std::size_t input_cap = mesh.num_faces() + 4 * std::size_t(options.min_faces_per_site) * n;
+  for (int round = 0; round < 4; ++round) {
+    stats.bisections += refine_long_edges(out.working, max_edge * std::pow(2.0, levels), input_cap);
+    const int again = levels_for(out.working.mesh.num_faces());
+    if (again == levels) break;
+    levels = again;
+  }
+  subdivide(out.working, levels);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
                        " times) has only " + std::to_string(out.working.mesh.num_vertices()) + " vertices");
-  // Faces longer than half the site spacing could hold two sites: bisect them (bounded, so a
-  // degenerate input cannot blow up).
-  stats.bisections = refine_long_edges(out.working, 0.5 * std::sqrt(area / double(n)),
-                                       out.working.mesh.num_faces() + 4 * n);
+  stats.bisections += refine_long_edges(out.working, max_edge, out.working.mesh.num_faces() + 4 * n);
   stats.subdivisions = levels;
   stats.working_faces = out.working.mesh.num_faces();
   stats.timings.subdivide = seconds_since(t0);

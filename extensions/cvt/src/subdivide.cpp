@@ -145,8 +145,13 @@ WorkingMesh subdivide(const TriangleMesh& mesh, int levels) {
     w.parent[f] = f;
     w.corner_bary[f] = {Bary{1, 0, 0}, Bary{0, 1, 0}, Bary{0, 0, 1}};
   }
-  for (int i = 0; i < levels; ++i) split_once(w);
+  subdivide(w, levels);
   return w;
+}
+
+void subdivide(WorkingMesh& w, int levels) {
+  if (levels < 0) throw InvalidInput("cvt: negative subdivision level");
+  for (int i = 0; i < levels; ++i) split_once(w);
 }
 
 }  // namespace gsp::cvt

@@ -134,6 +134,8 @@ struct WorkingMesh {
   int levels = 0;
 };
 WorkingMesh subdivide(const TriangleMesh& mesh, int levels);
+// The same split of a working mesh (after refine_long_edges, say), `levels` more times.
+void subdivide(WorkingMesh& w, int levels);
 
 // Longest-edge bisection (conforming: an edge is split in all its faces) until no edge is
 // longer than max_edge, or the mesh has max_faces faces, or after 12 passes; the surface does
