@@ -189,6 +189,11 @@ TEST(CvtOptions, ContradictionsThrow) {
   o.over_relaxation = 2.5;
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   o.over_relaxation = 1.0;
+  o.feature_angle = -1;
+  EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
+  o.feature_angle = std::nan("");
+  EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
+  o.feature_angle = 0;
   o.sites = 100000000;   // more than the working mesh can have vertices (10 splits: ~17 million)
   EXPECT_THROW(cvt::compute_cvt(m, o), InvalidInput);
   TriangleMesh flat = m;

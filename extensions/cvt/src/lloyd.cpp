@@ -351,7 +351,6 @@ class Lloyd {
  private:
   bool is_fixed(Index label) const { return features_ && label < features_->sites.size(); }
 
- private:
   const WorkingGeometry& g_;
   const GeodesicSolver& solver_;
   const CvtOptions& o_;
@@ -441,6 +440,8 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   if (!(options.tolerance >= 0)) throw InvalidInput("cvt: the tolerance must be >= 0");
   if (!(options.over_relaxation >= 1.0 && options.over_relaxation < 2.0))
     throw InvalidInput("cvt: the over-relaxation factor must be in [1, 2)");
+  if (!(options.feature_angle >= 0 && options.feature_angle <= 180))
+    throw InvalidInput("cvt: the feature angle must be in [0, 180] degrees");
   CvtResult out;
   CvtStats& stats = out.stats;
   auto t0 = Clock::now();

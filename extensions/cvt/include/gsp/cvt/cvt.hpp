@@ -124,7 +124,8 @@ struct CvtStats {
   CvtTimings timings;
 };
 
-// The working mesh: the input split `levels` times 1-to-4, then long edges bisected. Its
+// The working mesh: the input's long edges bisected, then split `levels` times 1-to-4, then
+// long edges bisected again (compute_cvt; subdivide alone does the split). Its
 // first V vertices are the input's vertices; face f of it lies in input face parent[f], its
 // corner k at the parent's barycentric coordinates corner_bary[f][k].
 struct WorkingMesh {
