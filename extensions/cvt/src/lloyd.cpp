@@ -481,6 +481,8 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     if (again == levels) break;
     levels = again;
   }
+  // Fewer levels than the last round bisected for (nothing to do when the rounds settled).
+  stats.bisections += refine_long_edges(out.working, max_edge * std::pow(2.0, levels), input_cap);
   subdivide(out.working, levels);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
