@@ -69,13 +69,26 @@ void flood(const WorkingGeometry& g, std::vector<Index>& owner, std::vector<doub
 // The band: the vertices within `radius` of a curve; then each of them belongs to the sample
 // nearest it through the band (a Voronoi diagram of the samples on the band's vertices, so every
 // sample's part is connected and two samples' parts meet along one border, as in the plane).
+// Each face with a corner in the band goes to the sample, of its corners' ones, nearest its
+// centroid. Once per run: the band does not depend on the free sites.
 void grow_band(const WorkingGeometry& g, double radius, std::vector<Index> on_curve, FeatureSites& f) {
   std::vector<double> to_curve;
   flood(g, on_curve, to_curve, radius, nullptr);
-  f.band_owner.assign(g.mesh.num_vertices(), kInvalidIndex);
-  for (Index s = 0; s < f.sites.size(); ++s) f.band_owner[f.site_vertex[s]] = s;
+  std::vector<Index> owner(g.mesh.num_vertices(), kInvalidIndex);
+  for (Index s = 0; s < f.sites.size(); ++s) owner[f.site_vertex[s]] = s;
   std::vector<double> to_sample;
-  flood(g, f.band_owner, to_sample, std::numeric_limits<double>::infinity(), &to_curve);
+  flood(g, owner, to_sample, std::numeric_limits<double>::infinity(), &to_curve);
+  for (Index face = 0; face < g.mesh.num_faces(); ++face) {
+    Index best_owner = kInvalidIndex;
+    double best = std::numeric_limits<double>::infinity();
+    for (Index v : g.mesh.triangles[face]) {
+      const Index o = owner[v];
+      if (o == kInvalidIndex || o == best_owner) continue;
+      const double d = distance(f.sites[o].position, g.centroid[face]);
+      if (d < best) best = d, best_owner = o;
+    }
+    if (best_owner != kInvalidIndex) f.band_faces.push_back({face, best_owner});
+  }
 }
 
 }  // namespace
@@ -128,20 +141,10 @@ FeatureSites feature_sites(const WorkingGeometry& g, double angle_deg, double sp
   return out;
 }
 
-std::size_t claim_feature_band(const WorkingGeometry& g, const FeatureSites& f, std::vector<Index>& label) {
-  if (f.sites.empty()) return 0;
+std::size_t claim_feature_band(const FeatureSites& f, std::vector<Index>& label) {
   std::size_t changed = 0;
-  for (Index face = 0; face < g.mesh.num_faces(); ++face) {
-    Index owner = kInvalidIndex;
-    double best = std::numeric_limits<double>::infinity();
-    for (Index v : g.mesh.triangles[face]) {
-      const Index o = f.band_owner[v];
-      if (o == kInvalidIndex || o == owner) continue;
-      const double d = distance(f.sites[o].position, g.centroid[face]);
-      if (d < best) best = d, owner = o;
-    }
-    if (owner != kInvalidIndex && label[face] != owner) label[face] = owner, ++changed;
-  }
+  for (const auto& [face, owner] : f.band_faces)
+    if (label[face] != owner) label[face] = owner, ++changed;
   return changed;
 }
 

@@ -11,16 +11,16 @@
 #include "working_geometry.hpp"
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace gsp::cvt::detail {
 
 struct FeatureSites {
   std::vector<SurfaceSite> sites;        // fixed, at working vertices (corners exactly)
-  // The band: working vertices within band_width * spacing of a curve or a fixed boundary
-  // corner (along the mesh edges), each with the sample nearest it through the band;
-  // kInvalidIndex elsewhere.
-  std::vector<Index> band_owner;
+  // The band: the faces with a corner within band_width * spacing of a curve or a fixed
+  // boundary corner (along the mesh edges), each with its sample (claim_feature_band).
+  std::vector<std::pair<Index, Index>> band_faces;
   std::vector<Index> site_vertex;        // per site: its working vertex
   std::size_t curves = 0;                // curves kept (those at least one spacing long)
   std::size_t dropped_curves = 0;        // shorter curves, left to the free sites
@@ -34,9 +34,10 @@ struct FeatureSites {
 // would cut them. A jagged scan boundary turns often but between corners a few edges apart.
 FeatureSites feature_sites(const WorkingGeometry& g, double angle_deg, double spacing, double band_width);
 
-// Every face with a corner in the band takes the sample, of its corners' ones, nearest its
-// centroid: the band is shared out as the Voronoi regions of the samples (in a strip between
-// two close curves, of both curves' samples). Returns the faces changed.
-std::size_t claim_feature_band(const WorkingGeometry& g, const FeatureSites& f, std::vector<Index>& label);
+// Every face of the band takes its sample (the one, of its corners' samples nearest through
+// the band, nearest its centroid): the band is shared out as the Voronoi regions of the
+// samples (in a strip between two close curves, of both curves' samples). Returns the faces
+// changed.
+std::size_t claim_feature_band(const FeatureSites& f, std::vector<Index>& label);
 
 }  // namespace gsp::cvt::detail

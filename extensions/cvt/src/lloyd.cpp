@@ -61,7 +61,7 @@ class Lloyd {
     t0 = Clock::now();
     e.energy = cvt_energy(g_.mesh, e.result);
     e.label = e.result.face_source;
-    if (features_) claim_feature_band(g_, *features_, e.label);
+    if (features_) claim_feature_band(*features_, e.label);
     const std::vector<Index> site_face = faces_of(sites);
     // Pieces of a region a few faces large are artefacts of face-granular labels (a face whose
     // centroid is barely on the other side): they take their neighbours' label.
