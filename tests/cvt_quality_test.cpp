@@ -116,6 +116,20 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
     EXPECT_NEAR(a.distance, b.distance, 1e-9 * (1 + b.distance));
     EXPECT_NEAR(distance(a.position, p), a.distance, 1e-9 * (1 + a.distance));
   }
+  // within(p, r) is closest(p).distance <= r: at, just below and just above each point's own
+  // distance, at 0, and for points on the surface (vertices: distance 0).
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
+                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const double d = index.closest(p).distance;
+    for (double r : {d, d * (1 - 1e-9), d * (1 + 1e-9), 0.5 * d, 2 * d, 0.0})
+      EXPECT_EQ(index.within(p, r), d <= r) << "point " << i << " r " << r << " distance " << d;
+  }
+  for (Index v = 0; v < m.num_vertices(); v += 97) {
+    EXPECT_TRUE(index.within(m.positions[v], 0.0));
+    EXPECT_TRUE(index.within(m.positions[v], 1e-12));
+  }
+  EXPECT_FALSE(index.within(lo, -1.0));
   TriangleMesh none;
   none.positions = {{0, 0, 0}, {1, 0, 0}};
   none.triangles = {{0, 0, 1}};

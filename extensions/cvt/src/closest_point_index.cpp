@@ -14,6 +14,7 @@ struct ClosestPointIndex::Impl {
   const TriangleMesh& mesh;
   std::vector<Index> faces;   // Embree primitive -> mesh face
   Vec3 origin;                // positions are stored as floats relative to it
+  double slack = 0;           // the float boxes' rounding, bounded: a few ulps of the largest coordinate
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
 
@@ -51,6 +52,26 @@ bool query_triangle(RTCPointQueryFunctionArguments* args) {
   return true;
 }
 
+struct WithinQuery {
+  const TriangleMesh* mesh;
+  const std::vector<Index>* faces;
+  Vec3 p;
+  double r;
+  bool found;
+};
+
+bool query_within(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<WithinQuery*>(args->userPtr);
+  if (q->found) return false;
+  const Triangle& t = q->mesh->triangles[(*q->faces)[args->primID]];
+  const Vec3 a = q->mesh->positions[t[0]], b = q->mesh->positions[t[1]], c = q->mesh->positions[t[2]];
+  const std::array<double, 3> w = closest_point_on_triangle(q->p, a, b, c);
+  if (!(distance(w[0] * a + w[1] * b + w[2] * c, q->p) <= q->r)) return false;
+  q->found = true;
+  args->query->radius = 0;   // nothing more to look at
+  return true;
+}
+
 }  // namespace
 
 ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make_unique<Impl>(mesh)) {
@@ -61,6 +82,9 @@ ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make
   }
   if (s.faces.empty()) throw InvalidInput("closest point index: the mesh has no proper triangle");
   s.origin = bounding_box(mesh).center();
+  for (const Vec3& p : mesh.positions)
+    s.slack = std::max({s.slack, std::abs(p.x - s.origin.x), std::abs(p.y - s.origin.y), std::abs(p.z - s.origin.z)});
+  s.slack *= 8 * double(std::numeric_limits<float>::epsilon());
   s.device = rtcNewDevice(nullptr);
   if (!s.device) throw Error("closest point index: Embree could not create a device");
   s.scene = rtcNewScene(s.device);
@@ -103,6 +127,23 @@ ClosestPoint ClosestPointIndex::closest(Vec3 p) const {
   // a shift changes no distance.
   rtcPointQuery(s.scene, &pq, &context, query_triangle, &q);
   return q.best;
+}
+
+bool ClosestPointIndex::within(Vec3 p, double r) const {
+  const Impl& s = *impl_;
+  if (!(r >= 0)) return false;
+  WithinQuery q{&s.mesh, &s.faces, p, r, false};
+  const Vec3 local = p - s.origin;
+  RTCPointQuery pq;
+  pq.x = float(local.x), pq.y = float(local.y), pq.z = float(local.z);
+  pq.time = 0;
+  // Embree culls by float boxes around float positions: the radius is widened by their
+  // rounding, and the distance itself is decided in double by the callback.
+  pq.radius = float(r * (1 + 1e-5) + s.slack) + 1e-30f;
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(s.scene, &pq, &context, query_within, &q);
+  return q.found;
 }
 
 }  // namespace gsp::cvt

@@ -28,70 +28,115 @@ double deviation(const SmoothingContext& c, Index v, Vec3 x) {
   return worst;
 }
 
-// Points of the surface under v's triangles (v at x0; `normal`: theirs): x0, the surface
-// points nearest their edge midpoints at v and centroids, and the sample mesh's vertices
-// near v whose closest point on the triangles depends on v (not on the far edges, which
-// belong to the neighbours' triangles too): the input's tips and creases are among them.
-std::vector<Vec3> under_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal) {
+// Whether deviation(c, v, x) <= limit, without measuring each point's distance.
+bool close_to_surface(const SmoothingContext& c, Index v, Vec3 x, double limit) {
+  for (Index h : c.rings.around(v)) {
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    const Vec3 b = c.m.positions[t[(k + 1) % 3]], d = c.m.positions[t[(k + 2) % 3]];
+    for (Vec3 s : {(x + b + d) * (1.0 / 3), 0.5 * (x + b), 0.5 * (x + d)})
+      if (!c.index.within(s, limit)) return false;
+  }
+  return true;
+}
+
+// The triangles around v's neighbours that are not v's, each once, with a sphere around each:
+// they stay where they are when v moves, so a point within `limit` of one of them stays
+// within `limit` of the mesh whatever v does. The sphere (centroid, farthest corner) rejects
+// most triangles before the exact distance: |z - centre| - radius is a lower bound of it.
+class RestTriangles {
+ public:
+  RestTriangles(const SmoothingContext& c, Index v) {
+    std::vector<Index> faces;
+    for (Index h : c.rings.around(v))
+      for (Index u : c.m.triangles[face_of(h)]) {
+        if (u == v) continue;
+        for (Index k : c.rings.around(u)) {
+          const Triangle& t = c.m.triangles[face_of(k)];
+          if (t[0] != v && t[1] != v && t[2] != v) faces.push_back(face_of(k));
+        }
+      }
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    for (Index f : faces) {
+      const Triangle& t = c.m.triangles[f];
+      Entry e{{c.m.positions[t[0]], c.m.positions[t[1]], c.m.positions[t[2]]}, {}, 0};
+      e.centre = (e.p[0] + e.p[1] + e.p[2]) * (1.0 / 3);
+      for (const Vec3& q : e.p) e.radius = std::max(e.radius, distance(q, e.centre));
+      e.radius = e.radius * (1 + 1e-9) + 1e-300;   // rounding of the bound must not reject a hit
+      entries_.push_back(e);
+    }
+  }
+
+  // Whether z lies within `limit` of one of them.
+  bool cover(Vec3 z, double limit) const {
+    for (const Entry& e : entries_) {
+      if (distance(z, e.centre) - e.radius > limit) continue;
+      if (triangle_distance(z, e.p[0], e.p[1], e.p[2]) <= limit) return true;
+    }
+    return false;
+  }
+
+ private:
+  struct Entry {
+    Vec3 p[3];
+    Vec3 centre;
+    double radius;
+  };
+  std::vector<Entry> entries_;
+};
+
+// The points of the surface under v's triangles (v at x0; `normal`: theirs) that a move of v
+// could carry farther than max(bound, before) from the mesh, and their distances to v's
+// triangles before. The points under them: x0, the surface points nearest their edge
+// midpoints at v and centroids, and the sample mesh's vertices near v whose closest point on
+// the triangles depends on v (not on the far edges, which belong to the neighbours' triangles
+// too): the input's tips and creases are among them. A point the other triangles around
+// already keep within that bound stays within it whatever v does; checking it against v's
+// triangles alone blocked moves of vertices with long edges: on falconstatue's base at 2,000
+// sites wall points 0.03-0.08 (6-17 times the bound) from a sliver's ring, covered by their
+// own triangles, grew by 1e-8 and refused every move.
+void watched_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal, double bound, std::vector<Vec3>& kept,
+                    std::vector<double>& before) {
+  kept.clear(), before.clear();
+  std::vector<std::array<Vec3, 2>> ring;   // the far edge of each of v's triangles
   std::vector<Vec3> under{x0};
   double reach = 0;
   for (Index h : c.rings.around(v)) {
     const Triangle& t = c.m.triangles[face_of(h)];
     const Index k = corner_of(h);
     const Vec3 b = c.m.positions[t[(k + 1) % 3]], e = c.m.positions[t[(k + 2) % 3]];
+    ring.push_back({b, e});
     reach = std::max(reach, distance(x0, b));
     for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
       const ClosestPoint sp = c.index.closest(z);
       if (sp.point.element != kInvalidIndex) under.push_back(sp.position);
     }
   }
+  const RestTriangles rest(c, v);
+  // z's distance to v's triangles, and whether its closest point on one of them depends on v.
+  auto measure = [&](Vec3 z, bool& on_v) {
+    double d = 1e300;
+    on_v = false;
+    for (const auto& [b, e] : ring) {
+      const std::array<double, 3> w = closest_point_on_triangle(z, x0, b, e);
+      on_v = on_v || w[0] > 1e-9;
+      d = std::min(d, distance(z, w[0] * x0 + w[1] * b + w[2] * e));
+    }
+    return d;
+  };
+  auto watch = [&](Vec3 z, double d) {
+    if (rest.cover(z, std::max(bound, d))) return;
+    kept.push_back(z), before.push_back(d);
+  };
+  bool on_v = false;
+  for (Vec3 z : under) watch(z, measure(z, on_v));
   c.grid.near(x0, reach, [&](Index w) {
     if (dot(c.sample_normal[w], normal) <= 0) return;   // another sheet (a slit, a thin wall)
     const Vec3 z = c.samples.positions[w];
-    for (Index h : c.rings.around(v)) {
-      const Triangle& t = c.m.triangles[face_of(h)];
-      const Index k = corner_of(h);
-      const std::array<double, 3> wt =
-          closest_point_on_triangle(z, x0, c.m.positions[t[(k + 1) % 3]], c.m.positions[t[(k + 2) % 3]]);
-      if (wt[0] > 1e-9) {
-        under.push_back(z);
-        return;
-      }
-    }
+    const double d = measure(z, on_v);
+    if (on_v) watch(z, d);
   });
-  return under;
-}
-
-// Distance from z to the triangles around v's neighbours that are not v's: they stay where
-// they are when v moves, and an upper bound of the distance to the rest of the mesh.
-double rest_distance(const SmoothingContext& c, Index v, Vec3 z) {
-  double d = 1e300;
-  for (Index h : c.rings.around(v))
-    for (Index u : c.m.triangles[face_of(h)]) {
-      if (u == v) continue;
-      for (Index k : c.rings.around(u)) {
-        const Triangle& t = c.m.triangles[face_of(k)];
-        if (t[0] == v || t[1] == v || t[2] == v) continue;
-        d = std::min(d, triangle_distance(z, c.m, t));
-      }
-    }
-  return d;
-}
-
-// The points under_points finds that a move of v could carry farther than max(bound, before)
-// from the mesh, and their distances to v's triangles before. A point the other triangles
-// around already keep within that bound stays within it whatever v does; checking it
-// against v's triangles alone blocked moves of vertices with long edges: on falconstatue's
-// base at 2,000 sites wall points 0.03-0.08 (6-17 times the bound) from a sliver's ring,
-// covered by their own triangles, grew by 1e-8 and refused every move.
-void watched_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal, double bound, std::vector<Vec3>& kept,
-                    std::vector<double>& before) {
-  kept.clear(), before.clear();
-  for (Vec3 z : under_points(c, v, x0, normal)) {
-    const double d = ring_distance(c, v, z, x0);
-    if (rest_distance(c, v, z) <= std::max(bound, d)) continue;
-    kept.push_back(z), before.push_back(d);
-  }
 }
 
 }  // namespace
@@ -128,6 +173,25 @@ double plain_quality(const SmoothingContext& c, Index v, Vec3 x) {
   return worst;
 }
 
+// Whether z lies within `limit` of v's triangles with v at y: ring_distance(c, v, z, y) <= limit,
+// stopping at the first triangle within reach, tried from `hint` (a slot of v's ring; updated
+// to the slot that answered, the likeliest first next time).
+bool ring_within(const SmoothingContext& c, Index v, Vec3 z, Vec3 y, double limit, Index& hint) {
+  const auto ring = c.rings.around(v);
+  const std::size_t n = std::size_t(ring.end() - ring.begin());
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t slot = (hint + i) % n;
+    const Index h = ring.begin()[slot];
+    const Triangle& t = c.m.triangles[face_of(h)];
+    const Index k = corner_of(h);
+    if (triangle_distance(z, y, c.m.positions[t[(k + 1) % 3]], c.m.positions[t[(k + 2) % 3]]) <= limit) {
+      hint = Index(slot);
+      return true;
+    }
+  }
+  return false;
+}
+
 double ring_distance(const SmoothingContext& c, Index v, Vec3 z, Vec3 y) {
   double d = 1e300;
   for (Index h : c.rings.around(v)) {
@@ -140,10 +204,11 @@ double ring_distance(const SmoothingContext& c, Index v, Vec3 z, Vec3 y) {
 
 bool SurfaceGuard::keeps(Vec3 y) {
   if (!has_deviation_) deviation0_ = deviation(c_, v_, x0_), has_deviation_ = true;
-  if (deviation(c_, v_, y) > std::max(deviation0_, bound_)) return false;
+  if (!close_to_surface(c_, v_, y, std::max(deviation0_, bound_))) return false;
   if (!has_watched_) watched_points(c_, v_, x0_, normal_, bound_, watched_, watched_before_), has_watched_ = true;
+  if (hint_.size() != watched_.size()) hint_.assign(watched_.size(), 0);
   for (std::size_t i = 0; i < watched_.size(); ++i)
-    if (ring_distance(c_, v_, watched_[i], y) > std::max(watched_before_[i], bound_)) return false;
+    if (!ring_within(c_, v_, watched_[i], y, std::max(watched_before_[i], bound_), hint_[i])) return false;
   return true;
 }
 

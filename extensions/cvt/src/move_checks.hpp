@@ -4,6 +4,7 @@
 // minimum angle never falls and no tip or crease of the surface is cut off.
 #include "smoothing_context.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace gsp::cvt::detail {
@@ -37,6 +38,7 @@ class SurfaceGuard {
   SurfaceGuard(const SmoothingContext& c, Index v, Vec3 normal, double bound)
       : c_(c), v_(v), x0_(c.m.positions[v]), normal_(normal), bound_(bound) {}
   bool keeps(Vec3 y);
+  Vec3 normal() const { return normal_; }
 
  private:
   const SmoothingContext& c_;
@@ -47,6 +49,7 @@ class SurfaceGuard {
   double deviation0_ = 0;
   std::vector<Vec3> watched_;
   std::vector<double> watched_before_;
+  std::vector<Index> hint_;   // per watched point, the ring slot that kept it last time
 };
 
 }  // namespace gsp::cvt::detail

@@ -19,6 +19,9 @@ class ClosestPointIndex {
   ClosestPointIndex& operator=(const ClosestPointIndex&) = delete;
 
   ClosestPoint closest(Vec3 p) const;
+  // Whether a triangle lies within distance r of p (closest(p).distance <= r, decided in the
+  // same double precision), found faster: the search is bounded by r and stops at the first.
+  bool within(Vec3 p, double r) const;
 
  private:
   struct Impl;
