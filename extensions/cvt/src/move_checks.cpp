@@ -43,7 +43,7 @@ bool close_to_surface(const SmoothingContext& c, Index v, Vec3 x, double limit) 
 // The triangles around v's neighbours that are not v's, each once, with a sphere around each:
 // they stay where they are when v moves, so a point within `limit` of one of them stays
 // within `limit` of the mesh whatever v does. The sphere (centroid, farthest corner) rejects
-// most triangles before the exact distance: |z - centre| - radius is a lower bound of it.
+// most triangles before the exact distance, which is at least |z - centre| - radius.
 class RestTriangles {
  public:
   RestTriangles(const SmoothingContext& c, Index v) {
@@ -63,7 +63,6 @@ class RestTriangles {
       Entry e{{c.m.positions[t[0]], c.m.positions[t[1]], c.m.positions[t[2]]}, {}, 0};
       e.centre = (e.p[0] + e.p[1] + e.p[2]) * (1.0 / 3);
       for (const Vec3& q : e.p) e.radius = std::max(e.radius, distance(q, e.centre));
-      e.radius = e.radius * (1 + 1e-9) + 1e-300;   // rounding of the bound must not reject a hit
       entries_.push_back(e);
     }
   }
@@ -71,7 +70,8 @@ class RestTriangles {
   // Whether z lies within `limit` of one of them.
   bool cover(Vec3 z, double limit) const {
     for (const Entry& e : entries_) {
-      if (distance(z, e.centre) - e.radius > limit) continue;
+      // (the relative slack covers the rounding of both sides: a hit is never rejected)
+      if (distance(z, e.centre) > (limit + e.radius) * (1 + 1e-12)) continue;
       if (triangle_distance(z, e.p[0], e.p[1], e.p[2]) <= limit) return true;
     }
     return false;
