@@ -241,13 +241,16 @@ class Lloyd {
   }
 
   // The point of component k (or of its boundary arc) closest to p; a site with no face when
-  // there is none (the callers keep the old site then).
+  // there is none (the callers keep the old site then). A face whose sphere around its
+  // centroid lies farther from p than the best point so far cannot hold a closer one: skipped
+  // without its closest point (the relative slack covers rounding, so the answer is the same).
   SurfaceSite project(const Evaluation& e, Index s, Index k, Vec3 p, bool boundary) const {
     SurfaceSite best;
     double best_d = std::numeric_limits<double>::infinity();
     for (Index i = e.buckets.begin[s]; i < e.buckets.begin[s + 1]; ++i) {
       const Index f = e.buckets.faces[i];
       if (e.components.of_face[f] != k) continue;
+      if (distance(p, g_.centroid[f]) > (best_d + g_.radius[f]) * (1 + 1e-12)) continue;
       for (Index j = 0; j < (boundary ? 3u : 1u); ++j) {
         if (boundary && !g_.boundary_halfedge[3 * f + j]) continue;
         const SurfaceSite q = boundary ? g_.closest_on_halfedge(3 * f + j, p) : g_.closest_on_face(f, p);

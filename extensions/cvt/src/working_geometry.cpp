@@ -8,12 +8,14 @@ namespace gsp::cvt::detail {
 WorkingGeometry::WorkingGeometry(const TriangleMesh& m) : mesh(m), conn(build_connectivity(m)) {
   area.resize(m.num_faces());
   centroid.resize(m.num_faces());
+  radius.resize(m.num_faces());
   for (Index f = 0; f < m.num_faces(); ++f) {
     const Triangle& t = m.triangles[f];
     const Vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
     const bool repeated = repeats_vertex(t);
     area[f] = repeated ? 0.0 : 0.5 * norm(cross(b - a, c - a));
     centroid[f] = (1.0 / 3.0) * (a + b + c);
+    radius[f] = std::max({distance(a, centroid[f]), distance(b, centroid[f]), distance(c, centroid[f])});
     total_area += area[f];
   }
   boundary_halfedge.resize(conn.num_halfedges());

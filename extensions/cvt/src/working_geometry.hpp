@@ -20,6 +20,7 @@ struct WorkingGeometry {
   Connectivity conn;
   std::vector<double> area;
   std::vector<Vec3> centroid;
+  std::vector<double> radius;   // the centroid's largest distance to a corner
   std::vector<bool> boundary_halfedge;   // ring of one
   double total_area = 0;
   double diagonal = 0;
