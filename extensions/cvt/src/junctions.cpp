@@ -97,7 +97,23 @@ DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, co
     d.junction_vertex.push_back(vertex);
   };
   std::vector<Index> fan, seq;
+  // Fewer than three labels among all the faces at v (a region's inside, a border between two:
+  // nearly every vertex): its fan, a subset of them, has fewer too, and v makes no triangle.
+  // Read off the vertex's corners without walking the fan.
+  auto fewer_than_three = [&](Index v) {
+    Index first = 0, second = 0;
+    int seen = 0;
+    for (Index i = conn.vertex_corner_begin[v]; i < conn.vertex_corner_begin[v + 1]; ++i) {
+      const Index l = label[face_of(conn.vertex_corners[i])];
+      if ((seen > 0 && l == first) || (seen > 1 && l == second)) continue;
+      if (seen == 2) return false;
+      (seen == 0 ? first : second) = l;
+      ++seen;
+    }
+    return true;
+  };
   for (Index v = 0; v < m.num_vertices(); ++v) {
+    if (fewer_than_three(v)) continue;
     vertex = v;
     bool closed = false;
     const bool ok = vertex_fan(m, conn, v, fan, closed);
