@@ -14,30 +14,34 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Largest distance to the surface of the centroids of v's triangles and the midpoints of
-// their edges at v, with v at x: the chords must not leave the surface.
-double deviation(const SmoothingContext& c, Index v, Vec3 x) {
-  double worst = 0;
+// The centroids of v's triangles and the midpoints of their edges at v, with v at x, each
+// given to fn until it returns false: the points whose distance to the surface bounds how far
+// the chords leave it. True if fn accepted every point.
+template <class Fn>
+bool all_chord_points(const SmoothingContext& c, Index v, Vec3 x, Fn&& fn) {
   for (Index h : c.rings.around(v)) {
     const Triangle& t = c.m.triangles[face_of(h)];
     const Index k = corner_of(h);
     const Vec3 b = c.m.positions[t[(k + 1) % 3]], d = c.m.positions[t[(k + 2) % 3]];
     for (Vec3 s : {(x + b + d) * (1.0 / 3), 0.5 * (x + b), 0.5 * (x + d)})
-      worst = std::max(worst, c.index.closest(s).distance);
+      if (!fn(s)) return false;
   }
+  return true;
+}
+
+// The largest distance of those points to the surface: the figure a move may not exceed.
+double deviation(const SmoothingContext& c, Index v, Vec3 x) {
+  double worst = 0;
+  all_chord_points(c, v, x, [&](Vec3 s) {
+    worst = std::max(worst, c.index.closest(s).distance);
+    return true;
+  });
   return worst;
 }
 
 // Whether deviation(c, v, x) <= limit, without measuring each point's distance.
 bool close_to_surface(const SmoothingContext& c, Index v, Vec3 x, double limit) {
-  for (Index h : c.rings.around(v)) {
-    const Triangle& t = c.m.triangles[face_of(h)];
-    const Index k = corner_of(h);
-    const Vec3 b = c.m.positions[t[(k + 1) % 3]], d = c.m.positions[t[(k + 2) % 3]];
-    for (Vec3 s : {(x + b + d) * (1.0 / 3), 0.5 * (x + b), 0.5 * (x + d)})
-      if (!c.index.within(s, limit)) return false;
-  }
-  return true;
+  return all_chord_points(c, v, x, [&](Vec3 s) { return c.index.within(s, limit); });
 }
 
 // The triangles around v's neighbours that are not v's, each once, with a sphere around each:
@@ -205,8 +209,11 @@ double ring_distance(const SmoothingContext& c, Index v, Vec3 z, Vec3 y) {
 bool SurfaceGuard::keeps(Vec3 y) {
   if (!has_deviation_) deviation0_ = deviation(c_, v_, x0_), has_deviation_ = true;
   if (!close_to_surface(c_, v_, y, std::max(deviation0_, bound_))) return false;
-  if (!has_watched_) watched_points(c_, v_, x0_, normal_, bound_, watched_, watched_before_), has_watched_ = true;
-  if (hint_.size() != watched_.size()) hint_.assign(watched_.size(), 0);
+  if (!has_watched_) {
+    watched_points(c_, v_, x0_, normal_, bound_, watched_, watched_before_);
+    hint_.assign(watched_.size(), 0);
+    has_watched_ = true;
+  }
   for (std::size_t i = 0; i < watched_.size(); ++i)
     if (!ring_within(c_, v_, watched_[i], y, std::max(watched_before_[i], bound_), hint_[i])) return false;
   return true;
