@@ -109,28 +109,59 @@ double mean_edge_length(const std::vector<double>& length, const std::vector<boo
   return (n > 0 && sum > 0) ? sum / double(n) : 1.0;
 }
 
+CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
+                                  const std::vector<double>* length) {
+  constexpr double kPi = 3.14159265358979323846;
+  CornerAngleSums sums;
+  sums.angle.assign(mesh.num_vertices(), 0.0);
+  sums.used.assign(mesh.num_vertices(), 0);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    if (skipped_face[f]) continue;
+    const Triangle& t = mesh.triangles[f];
+    double a[3];
+    if (length) {
+      const double* l = &(*length)[3 * f];
+      for (int i = 0; i < 3; ++i) a[i] = detail::corner_angle(l[i], l[(i + 2) % 3], l[(i + 1) % 3]);
+    } else {
+      // |cross| is twice the area at every corner: one cross product, and the third angle
+      // from the other two (a degenerate face keeps its own atan2: its corners may sum to 0).
+      const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
+      const Vec3 e01 = p1 - p0, e02 = p2 - p0, e12 = p2 - p1;
+      const double twice_area = norm(cross(e01, e02));
+      a[0] = std::atan2(twice_area, dot(e01, e02));
+      a[1] = std::atan2(twice_area, -dot(e01, e12));
+      a[2] = twice_area > 0 ? kPi - a[0] - a[1] : std::atan2(0.0, dot(e02, e12));
+    }
+    for (int i = 0; i < 3; ++i) {
+      sums.angle[t[i]] += a[i];
+      sums.used[t[i]] = 1;
+    }
+  }
+  return sums;
+}
+
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
                                        const std::vector<Index>& nonmanifold_vertices,
                                        const std::vector<double>* length) {
+  return vertex_kinds(mesh, corner_angle_sums(mesh, skipped_face, length), boundary_halfedge, skipped_face,
+                      nonmanifold_vertices);
+}
+
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
+                                       const std::vector<std::uint8_t>& boundary_halfedge,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& nonmanifold_vertices) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
-  std::vector<double> angle(nv, 0.0);
-  std::vector<std::uint8_t> boundary(nv, 0), used(nv, 0);
+  const std::vector<double>& angle = sums.angle;
+  const std::vector<std::uint8_t>& used = sums.used;
+  std::vector<std::uint8_t> boundary(nv, 0);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     if (skipped_face[f]) continue;
     const Triangle& t = mesh.triangles[f];
-    for (int i = 0; i < 3; ++i) {
-      if (length) {
-        angle[t[i]] += detail::corner_angle((*length)[3 * f + i], (*length)[3 * f + (i + 2) % 3], (*length)[3 * f + (i + 1) % 3]);
-      } else {
-        const Vec3 a = mesh.positions[t[(i + 1) % 3]] - mesh.positions[t[i]];
-        const Vec3 b = mesh.positions[t[(i + 2) % 3]] - mesh.positions[t[i]];
-        angle[t[i]] += std::atan2(norm(cross(a, b)), dot(a, b));
-      }
-      used[t[i]] = 1;
+    for (int i = 0; i < 3; ++i)
       if (boundary_halfedge[3 * f + i]) boundary[t[i]] = boundary[t[(i + 1) % 3]] = 1;
-    }
   }
   constexpr double tol = kFlatAngleTolerance;
   std::vector<std::uint8_t> kind(nv, kPlainVertex);

@@ -93,7 +93,7 @@ void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   }
 }
 
-void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn) {
+void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn, intrinsic::CornerAngleSums&& angle_sums) {
   bridge_vertices = intrinsic::bridge_vertices(mesh(), conn, skipped_face);
   intrinsic::CoincidentVertices groups = intrinsic::coincident_vertices(mesh(), conn, skipped_face, input.length);
   coincident = std::move(groups.vertices);
@@ -110,8 +110,8 @@ void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn) {
   std::vector<std::uint8_t> boundary_halfedge(input.ring.size());
   for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
     boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;
-  vertex_kind = intrinsic::vertex_kinds(mesh(), boundary_halfedge, skipped_face, nonmanifold,
-                                        custom_lengths ? &input.length : nullptr);
+  vertex_kind = intrinsic::vertex_kinds(mesh(), angle_sums, boundary_halfedge, skipped_face, nonmanifold);
+  angle_sums = {};
 }
 
 GeodesicSolver::GeodesicSolver(const TriangleMesh& input, const SolverOptions& options)
@@ -179,18 +179,24 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
     last = now;
     return s;
   };
-  // On a big mesh two threads: the connectivity beside the lengths, then the vertices'
-  // analysis beside the Delaunay flips (each pair reads the same tables and writes apart).
+  // On a big mesh two threads: the connectivity beside the lengths and the corner angle sums
+  // (the vertices' analysis needs no connectivity for them), then the rest of the analysis
+  // beside the Delaunay flips (each pair reads the same tables and writes apart).
   const bool two = options.threads != 1 && (options.threads >= 2 || (mesh().num_faces() >= kParallelMinFaces &&
                                                                        std::thread::hardware_concurrency() >= 2 &&
                                                                        !detail::inside_parallel_region()));
   Connectivity conn;
+  intrinsic::CornerAngleSums angle_sums;
+  auto lengths_and_angles = [&] {
+    build_lengths(options.edge_lengths);
+    angle_sums = intrinsic::corner_angle_sums(mesh(), skipped_face, custom_lengths ? &this->input.length : nullptr);
+  };
   if (!two) {
     conn = build_connectivity(mesh());
     timings.connectivity = lap();
-    build_lengths(options.edge_lengths);
+    lengths_and_angles();
   } else {
-    detail::side_by_side([&] { build_lengths(options.edge_lengths); },
+    detail::side_by_side(lengths_and_angles,
                          [&] {
                            conn = build_connectivity(mesh());
                            timings.connectivity = lap();
@@ -199,7 +205,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   build_links(conn, two ? 2 : 1);
   timings.input_tables = lap();
   if (!two || !options.intrinsic_delaunay) {
-    analyse_vertices(conn);
+    analyse_vertices(conn, std::move(angle_sums));
     timings.vertex_analysis = lap();
     if (options.intrinsic_delaunay) build_delaunay(false);
     timings.delaunay = lap();
@@ -207,7 +213,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
     detail::side_by_side(
         [&] {
           const auto start = Clock::now();
-          analyse_vertices(conn);
+          analyse_vertices(conn, std::move(angle_sums));
           timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
         },
         [&] {

@@ -11,6 +11,7 @@
 
 #include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <atomic>
 #include <cmath>
@@ -211,7 +212,7 @@ struct GeodesicSolver::Impl {
   void build_links(const Connectivity& conn, unsigned threads);
   // Bridge and coincident vertices, vertex kinds; hands the vertex corners to the input
   // triangulation and releases the rest of `conn`.
-  void analyse_vertices(Connectivity& conn);
+  void analyse_vertices(Connectivity& conn, intrinsic::CornerAngleSums&& angle_sums);
   void build_delaunay(bool two_threads);
   template <class Real>
   GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,

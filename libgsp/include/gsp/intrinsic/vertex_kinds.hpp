@@ -47,6 +47,22 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
                                        const std::vector<Index>& nonmanifold_vertices,
                                        const std::vector<double>* length = nullptr);
 
+// vertex_kinds above in two steps. The angle sums need no connectivity, so the core computes
+// them beside it (solver_build.cpp): per vertex the sum of its corner angles over the faces
+// that take part, and whether such a face uses it. From positions, one cross product and two
+// atan2 per face (the third angle is pi minus the two, on a face of non-zero area);
+// from `length` (per halfedge) where given.
+struct CornerAngleSums {
+  std::vector<double> angle;
+  std::vector<std::uint8_t> used;
+};
+CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
+                                  const std::vector<double>* length = nullptr);
+std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
+                                       const std::vector<std::uint8_t>& boundary_halfedge,
+                                       const std::vector<bool>& skipped_face,
+                                       const std::vector<Index>& nonmanifold_vertices);
+
 // What vertex_kinds above needs from the connectivity, as the core's propagation sees the
 // mesh. boundary_halfedges: per halfedge, whether the propagation crosses from it to no other
 // face (next_crossed(h) == h, gsp/intrinsic/edge_lengths.hpp: alone on its edge among the
