@@ -445,6 +445,8 @@ def test_command_line_exit_codes(cluster, mesh_folder, tmp_path):
         (["geodesic", str(tmp_path / "*.nothing"), "-o", tmp_path / "u"], "no file matches"),
         (["geodesic", good[0], "-o", tmp_path / "u", "--workers", "2", *sched], "not allowed with argument"),
         (["geodesic", good[0], "-o", tmp_path / "u", "--workers", "0"], "--workers 0: at least 1"),
+        (["geodesic", good[0], "-o", tmp_path / "u", "--worker-processes", *sched],
+         "--worker-processes applies to a local cluster"),
         (["geodesic", good[0], "-o", tmp_path / "u", "--stats", "x.json"], "--stats: gsp-batch sets this option"),
         (["batch_jobs:nothing", good[0], "-o", tmp_path / "u"], "batch_jobs has no nothing"),
         (["no_such_module:f", good[0], "-o", tmp_path / "u"], "cannot import no_such_module"),
@@ -472,10 +474,33 @@ def test_local_cluster_from_the_command_line(mesh_folder, tmp_path):
     rows = read_csv(tmp_path / "o" / "results.csv")
     assert [r["status"] for r in rows] == ["ok", "ok"]
     assert len({r["worker"] for r in rows}) >= 1
+    # The same with the workers as processes: other workers, the same outputs.
+    code, err = cli("sample", mesh_folder / "fertility.off", mesh_folder / "newell_teapot.obj", "-o", tmp_path / "p",
+                    "--workers", "2", "--worker-processes", "--count", "30")
+    assert code == 0, err
+    rows = read_csv(tmp_path / "p" / "results.csv")
+    assert [r["status"] for r in rows] == ["ok", "ok"]
+    assert all(r["worker"].startswith("tcp://127.0.0.1:") for r in rows), rows
+    for r in rows:
+        assert (tmp_path / "p" / r["output"]).read_bytes() == (tmp_path / "o" / r["output"]).read_bytes()
     # Nothing left to do: no cluster is started.
     code, err = cli("sample", mesh_folder / "fertility.off", mesh_folder / "newell_teapot.obj", "-o", tmp_path / "o",
                     "--workers", "2", "--count", "30")
     assert code == 0 and "dashboard" not in err and "0 ok, 2 skipped" in err
+
+
+def test_local_workers_are_threads_unless_asked():
+    for processes in (False, True):
+        client, close = batch.connect(workers=2, processes=processes)
+        try:
+            client.wait_for_workers(2)
+            pids = set(client.run(os.getpid).values())
+            if processes:
+                assert len(pids) == 2 and os.getpid() not in pids
+            else:
+                assert pids == {os.getpid()}      # both workers are threads of this process
+        finally:
+            close()
 
 
 def test_output_names_are_unique():

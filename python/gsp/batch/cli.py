@@ -15,8 +15,9 @@ from .progress import _Progress
 from .runner import run
 
 # gsp-batch's own options and how many values each takes.
-_OWN = {"-o": 1, "--output": 1, "--scheduler": 1, "--workers": 1, "--bin": 1, "--ext": 1, "--timeout": 1,
-        "--max-memory": 1, "--retries": 1, "--force": 0, "-q": 0, "--quiet": 0, "-h": 0, "--help": 0}
+_OWN = {"-o": 1, "--output": 1, "--scheduler": 1, "--workers": 1, "--worker-processes": 0, "--bin": 1, "--ext": 1,
+        "--timeout": 1, "--max-memory": 1, "--retries": 1, "--force": 0, "-q": 0, "--quiet": 0, "-h": 0,
+        "--help": 0}
 
 
 def _is_option(token):
@@ -82,8 +83,11 @@ def _parser():
     g = p.add_mutually_exclusive_group()
     g.add_argument("--scheduler", metavar="ADDRESS", help="an existing Dask scheduler: tcp://host:port or a "
                                                          "scheduler file")
-    g.add_argument("--workers", type=int, metavar="N", help="start a local cluster of N worker processes, one "
-                                                           "thread each (default: one per core)")
+    g.add_argument("--workers", type=int, metavar="N", help="start a local cluster of N workers, one thread "
+                                                           "each (default: one per core)")
+    p.add_argument("--worker-processes", action="store_true",
+                   help="the local cluster's workers as processes (each restarted by a nanny if it dies) "
+                        "instead of threads of gsp-batch; every mesh runs in its own process either way")
     p.add_argument("--bin", metavar="DIR", help="folder of the gsp-* apps (default: $GSP_BIN_DIR, PATH, the "
                                                 "checkout's build/bin)")
     p.add_argument("--ext", metavar="EXT", help="output extension (default: .ply; bench: .json)")
@@ -109,6 +113,8 @@ def main(argv=None):
     try:
         if args.scheduler and args.workers:
             raise UsageError("--scheduler and --workers exclude each other")
+        if args.scheduler and args.worker_processes:
+            raise UsageError("--worker-processes applies to a local cluster, not to --scheduler")
         if args.workers is not None and args.workers < 1:
             raise UsageError(f"--workers {args.workers}: at least 1")
         if args.retries < 0:
@@ -135,7 +141,7 @@ def main(argv=None):
         rows = run(args.job, args.inputs, args.output, scheduler=args.scheduler, workers=args.workers,
                    options=job_opts, bin_dir=args.bin, ext=args.ext, timeout=args.timeout,
                    max_memory=args.max_memory, retries=args.retries, force=args.force, progress=bar,
-                   on_client=on_client)
+                   on_client=on_client, worker_processes=args.worker_processes)
     except UsageError as e:
         bar.clear()
         print(f"gsp-batch: error: {e}\nRun with --help for more information.", file=err)

@@ -66,7 +66,8 @@ def _completed_with_results(client, futures):
 
 
 def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, options=(), bin_dir=None,
-        ext=None, timeout=None, max_memory=None, retries=2, force=False, progress=None, on_client=None):
+        ext=None, timeout=None, max_memory=None, retries=2, force=False, progress=None, on_client=None,
+        worker_processes=False):
     """Run JOB on every mesh of INPUTS on Dask, outputs into OUTDIR; returns one dict per mesh.
 
     job: "geodesic", "sample", "remesh", "path", "bench" (the apps, `options` passed to them),
@@ -74,7 +75,8 @@ def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, optio
     (renamed to OUTDIR/<name><ext> when it returns; fn may take `input=` too); it returns a
     dict of figures for the row, or None.
     inputs: files, folders and globs. client / scheduler / workers: where to run (default: a
-    LocalCluster with a worker per core). timeout: seconds per mesh. max_memory: bytes (or
+    LocalCluster with a worker per core, threads of this process unless worker_processes;
+    every mesh runs in a process of its own either way). timeout: seconds per mesh. max_memory: bytes (or
     "4G") of address space per mesh. retries: Dask's retries of a task whose worker failed.
     force: ignore the manifest (re-run everything). progress(row, done, total): called for
     every row as it is known (skipped rows first). on_client(client): called once connected
@@ -172,7 +174,7 @@ def run(job, inputs, outdir, *, scheduler=None, workers=None, client=None, optio
     try:
         if tasks:
             if client is None:
-                client, owned_close = connect(scheduler, workers)
+                client, owned_close = connect(scheduler, workers, processes=worker_processes)
             if on_client is not None:
                 on_client(client)
             run_id = uuid.uuid4().hex[:8]
