@@ -111,11 +111,17 @@ double mean_edge_length(const std::vector<double>& length, const std::vector<boo
 
 CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                                   const std::vector<double>* length) {
-  constexpr double kPi = 3.14159265358979323846;
   CornerAngleSums sums;
   sums.angle.assign(mesh.num_vertices(), 0.0);
   sums.used.assign(mesh.num_vertices(), 0);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+  add_corner_angles(mesh, skipped_face, length, sums, 0, mesh.num_faces());
+  return sums;
+}
+
+void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
+                       const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end) {
+  constexpr double kPi = 3.14159265358979323846;
+  for (std::size_t f = begin; f < end; ++f) {
     if (skipped_face[f]) continue;
     const Triangle& t = mesh.triangles[f];
     double a[3];
@@ -137,7 +143,6 @@ CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bo
       sums.used[t[i]] = 1;
     }
   }
-  return sums;
 }
 
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vector<std::uint8_t>& boundary_halfedge,

@@ -18,6 +18,8 @@
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/topology.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -179,32 +181,50 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
     last = now;
     return s;
   };
-  // On a big mesh two threads: the connectivity beside the lengths and the corner angle sums
-  // (the vertices' analysis needs no connectivity for them), then the rest of the analysis
-  // beside the Delaunay flips (each pair reads the same tables and writes apart).
+  // On a big mesh two threads: the connectivity beside the lengths and as many of the corner
+  // angle sums as fit (the vertices' analysis needs no connectivity for them), then the rest
+  // of the analysis beside the Delaunay flips (each pair reads the same tables and writes apart).
   const bool two = options.threads != 1 && (options.threads >= 2 || (mesh().num_faces() >= kParallelMinFaces &&
                                                                        std::thread::hardware_concurrency() >= 2 &&
                                                                        !detail::inside_parallel_region()));
   Connectivity conn;
   intrinsic::CornerAngleSums angle_sums;
-  auto lengths_and_angles = [&] {
-    build_lengths(options.edge_lengths);
-    angle_sums = intrinsic::corner_angle_sums(mesh(), skipped_face, custom_lengths ? &this->input.length : nullptr);
-  };
+  const std::vector<double>* angle_lengths = custom_lengths ? &this->input.length : nullptr;
+  // Faces whose corner angles are summed: on two threads the first pair sums them until the
+  // connectivity is done and the analysis adds the rest (the same sums whatever the split);
+  // on one, the analysis sums them all.
+  std::size_t angles_done = 0;
+  angle_sums.angle.assign(mesh().num_vertices(), 0.0);
+  angle_sums.used.assign(mesh().num_vertices(), 0);
   if (!two) {
     conn = build_connectivity(mesh());
     timings.connectivity = lap();
-    lengths_and_angles();
+    build_lengths(options.edge_lengths);
   } else {
-    detail::side_by_side(lengths_and_angles,
-                         [&] {
-                           conn = build_connectivity(mesh());
-                           timings.connectivity = lap();
-                         });
+    std::atomic<bool> connected{false};
+    detail::side_by_side(
+        [&] {
+          build_lengths(options.edge_lengths);
+          constexpr std::size_t kChunk = 8192;
+          while (angles_done < mesh().num_faces() && !connected.load(std::memory_order_relaxed)) {
+            const std::size_t end = std::min(angles_done + kChunk, mesh().num_faces());
+            intrinsic::add_corner_angles(mesh(), skipped_face, angle_lengths, angle_sums, angles_done, end);
+            angles_done = end;
+          }
+        },
+        [&] {
+          conn = build_connectivity(mesh());
+          timings.connectivity = lap();
+          connected.store(true, std::memory_order_relaxed);
+        });
   }
+  auto finish_angles = [&] {
+    intrinsic::add_corner_angles(mesh(), skipped_face, angle_lengths, angle_sums, angles_done, mesh().num_faces());
+  };
   build_links(conn, two ? 2 : 1);
   timings.input_tables = lap();
   if (!two || !options.intrinsic_delaunay) {
+    finish_angles();
     analyse_vertices(conn, std::move(angle_sums));
     timings.vertex_analysis = lap();
     if (options.intrinsic_delaunay) build_delaunay(false);
@@ -213,6 +233,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
     detail::side_by_side(
         [&] {
           const auto start = Clock::now();
+          finish_angles();
           analyse_vertices(conn, std::move(angle_sums));
           timings.vertex_analysis = std::chrono::duration<double>(Clock::now() - start).count();
         },

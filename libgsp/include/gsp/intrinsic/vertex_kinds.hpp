@@ -58,6 +58,10 @@ struct CornerAngleSums {
 };
 CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                                   const std::vector<double>* length = nullptr);
+// The same, faces [begin, end) added to sums sized for the mesh: ranges taken in face order
+// give the sums of one pass to the bit (each vertex adds its corners in face order).
+void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
+                       const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end);
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
