@@ -1,4 +1,5 @@
 #include "disjoint_sets.hpp"
+#include "prefetch_corners.hpp"
 
 #include <gsp/intrinsic/bridge_vertices.hpp>
 
@@ -11,6 +12,11 @@ std::vector<Index> bridge_vertices(const TriangleMesh& mesh, const Connectivity&
   detail::DisjointSets sets(nh);
   auto unite = [&](Index a, Index b) { sets.unite(a, b); };
   for (Index h = 0; h < nh; ++h) {
+    if (h + detail::kHalfedgesAhead < nh) {   // the partner's corners and sets ahead
+      const Index g = conn.radial_next[h + detail::kHalfedgesAhead];
+      __builtin_prefetch(mesh.triangles.data() + face_of(g));
+      __builtin_prefetch(sets.parent.data() + g);
+    }
     if (skipped_face[face_of(h)]) continue;
     const Index from = from_vertex(mesh, h);
     for (Index g = conn.radial_next[h]; g != h; g = conn.radial_next[g]) {

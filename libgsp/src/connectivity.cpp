@@ -1,3 +1,5 @@
+#include "prefetch_corners.hpp"
+
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
 
@@ -29,7 +31,16 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
   // touches memory in vertex order. One pass over the faces counts both, one fills both.
   c.vertex_corner_begin.assign(nv + 1, 0);
   std::vector<Index> bucket_begin(nv + 1, 0);
-  for (const Triangle& t : mesh.triangles) {
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Triangle& t = mesh.triangles[f];
+    if (f + detail::kFacesAhead < nf) {   // counters of the corners ahead (prefetch_corners.hpp)
+      const Triangle& q = mesh.triangles[f + detail::kFacesAhead];
+      for (int i = 0; i < 3; ++i)
+        if (q[i] < nv) {
+          __builtin_prefetch(c.vertex_corner_begin.data() + q[i] + 1, 1);
+          __builtin_prefetch(bucket_begin.data() + std::min(q[i], q[i == 2 ? 0 : i + 1]) + 1, 1);
+        }
+    }
     for (int i = 0; i < 3; ++i) {
       const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
       if (a >= nv) throw InvalidInput("triangle index " + std::to_string(a) + " out of range");
@@ -51,6 +62,8 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
     std::vector<Index> bucket_fill(bucket_begin.begin(), bucket_begin.end() - 1);
     for (Index f = 0; f < Index(nf); ++f) {
       const Triangle& t = mesh.triangles[f];
+      detail::prefetch_corners(mesh.triangles, corner_fill, f);
+      detail::prefetch_corners(mesh.triangles, bucket_fill, f);
       for (Index i = 0; i < 3; ++i) {
         const Index h = 3 * f + i, a = t[i], b = t[i == 2 ? 0 : i + 1];
         c.vertex_corners[corner_fill[a]++] = h;
@@ -64,6 +77,7 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
     }
   }
   c.edge_halfedge.reserve(nh / 2 + 1);
+  const std::uint64_t* const bucket_end = bucket.data() + bucket.size();
   auto halfedge = [](std::uint64_t e) { return Index(e & 0xffffffffu); };
   for (std::size_t v = 0; v < nv; ++v) {
     std::uint64_t* first = bucket.data() + bucket_begin[v];
@@ -86,6 +100,11 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
       const Index edge = static_cast<Index>(c.edge_halfedge.size());
       c.edge_halfedge.push_back(halfedge(*it));
       for (std::uint64_t* k = it; k != end; ++k) {
+        if (k + detail::kHalfedgesAhead < bucket_end) {   // the halfedges' slots ahead, written below
+          const Index ahead = halfedge(*(k + detail::kHalfedgesAhead));
+          __builtin_prefetch(c.radial_next.data() + ahead, 1);
+          __builtin_prefetch(c.halfedge_edge.data() + ahead, 1);
+        }
         c.radial_next[halfedge(*k)] = (k + 1 != end) ? halfedge(*(k + 1)) : halfedge(*it);
         c.halfedge_edge[halfedge(*k)] = edge;
       }

@@ -1,6 +1,7 @@
 #include "intrinsic_delaunay.hpp"
 
 #include "disjoint_sets.hpp"
+#include "prefetch_corners.hpp"
 
 #include <gsp/connectivity.hpp>
 
@@ -29,6 +30,18 @@ Index flippable_twin(const IntrinsicTriangulation& t, Index h) {
   const Triangle& b = t.triangles[f2];
   if (a[corner_of(prev_halfedge(h))] == b[corner_of(prev_halfedge(g))]) return kInvalidIndex;
   return g;
+}
+
+// A pass over the halfedges in order reads each one's twin: its link, its face's corners and
+// lengths, a cache miss each where the twin's face is far in face order. Asks for those of the
+// halfedge kHalfedgesAhead further on (only loads: nothing changes; prefetch_corners.hpp).
+[[gnu::always_inline]] inline void prefetch_twin(const IntrinsicTriangulation& t, Index h) {
+  const Index ahead = h + kHalfedgesAhead;
+  if (ahead >= t.ring.size()) return;
+  const Index g = t.ring[ahead];
+  __builtin_prefetch(t.ring.data() + g);
+  __builtin_prefetch(t.triangles.data() + face_of(g));
+  __builtin_prefetch(t.length.data() + 3 * face_of(g));
 }
 
 // Whether the twin g runs its edge the same way as h (the two faces are wound inconsistently).
@@ -164,6 +177,7 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
   DisjointSets sets(nf);   // over faces; a patch's root is its first face
   std::vector<char> open_face(nf, 0);   // a boundary, non-manifold or skipped-neighbour edge
   for (Index f = 0; f < nf; ++f) {
+    for (Index i = 0; i < 3; ++i) prefetch_twin(t, 3 * f + i);
     if (t.skipped[f]) continue;
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, g = t.ring[h];
@@ -210,6 +224,7 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
     std::vector<Vec3> centre(patches, Vec3{0, 0, 0});
     for (Index f = 0; f < nf; ++f)
       if (!t.skipped[f] && !open[patch[f]]) {
+        prefetch_corners(t.triangles, p, f);
         const Triangle& c = t.triangles[f];
         origin_volume[patch[f]] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
       }
@@ -217,10 +232,13 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
     bool any = false;
     for (std::size_t k = 0; k < patches; ++k) any |= about_centre[k] = char(open[k] || origin_volume[k] == 0);
     for (Index f = 0; any && f < nf; ++f)
-      if (!t.skipped[f] && about_centre[patch[f]])
+      if (!t.skipped[f] && about_centre[patch[f]]) {
+        prefetch_corners(t.triangles, p, f);
         for (Index x : t.triangles[f]) centre[patch[f]] = centre[patch[f]] + (1.0 / (3.0 * double(faces[patch[f]]))) * p[x];
+      }
     for (Index f = 0; any && f < nf; ++f) {
       if (t.skipped[f] || !about_centre[patch[f]]) continue;
+      prefetch_corners(t.triangles, p, f);
       const Index k = patch[f];
       const Triangle& c = t.triangles[f];
       const Vec3 a = p[c[0]] - centre[k], b = p[c[1]] - centre[k], d = p[c[2]] - centre[k];
@@ -264,6 +282,7 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
   constexpr char kPending = 1, kPendingDelaunay = 2;   // in the stack; the latter Delaunay as first seen
   std::vector<char> queued(nh, 0);
   for (Index h = 0; h < nh; ++h) {
+    prefetch_twin(t, h);
     if (!(h < t.ring[h])) continue;   // each edge once, by its smaller slot (and no boundary)
     const Index g = flippable_twin(t, h);
     if (g != kInvalidIndex) queued[h] = is_delaunay(t, h, g) ? kPendingDelaunay : kPending;

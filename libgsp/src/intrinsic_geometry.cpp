@@ -1,4 +1,5 @@
 #include "intrinsic_geometry.hpp"
+#include "prefetch_corners.hpp"
 
 #include <gsp/intrinsic/edge_lengths.hpp>
 
@@ -82,9 +83,11 @@ std::vector<bool> skipped_faces(const TriangleMesh& mesh) {
 
 std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
   std::vector<double> length(3 * mesh.num_faces());
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    detail::prefetch_corners(mesh.triangles, mesh.positions, f);
     for (int i = 0; i < 3; ++i)
       length[3 * f + i] = distance(mesh.positions[mesh.triangles[f][i]], mesh.positions[mesh.triangles[f][(i + 1) % 3]]);
+  }
   return length;
 }
 
@@ -122,6 +125,9 @@ void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skippe
                        const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end) {
   constexpr double kPi = 3.14159265358979323846;
   for (std::size_t f = begin; f < end; ++f) {
+    detail::prefetch_corners(mesh.triangles, mesh.positions, f);
+    detail::prefetch_corners(mesh.triangles, sums.angle, f);
+    detail::prefetch_corners(mesh.triangles, sums.used, f);
     if (skipped_face[f]) continue;
     const Triangle& t = mesh.triangles[f];
     double a[3];

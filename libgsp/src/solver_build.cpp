@@ -5,6 +5,7 @@
 #include "intrinsic_delaunay.hpp"
 #include "parallel_propagation.hpp"
 #include "parallel_ranges.hpp"
+#include "prefetch_corners.hpp"
 #include "side_by_side.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
@@ -52,7 +53,18 @@ void GeodesicSolver::Impl::build_links(const Connectivity& conn, unsigned thread
   // per-edge lists.
   std::vector<Index> plain(nh);
   detail::for_ranges(threads, nh, [&](std::size_t begin, std::size_t end, unsigned) {
-    for (Index h = Index(begin); h < Index(end); ++h) plain[h] = intrinsic::next_crossed(conn, skipped_face, input.length, h);
+    constexpr Index kAhead = detail::kHalfedgesAhead;
+    for (Index h = Index(begin); h < Index(end); ++h) {
+      // next_crossed reads the edge's first halfedge, then that halfedge's length: each a
+      // cache miss where edges are numbered apart from faces (prefetch_corners.hpp).
+      if (h + kAhead < Index(end)) {
+        const Index e = conn.halfedge_edge[h + kAhead];
+        if (e != kInvalidIndex) __builtin_prefetch(conn.edge_halfedge.data() + e);
+        const Index e2 = conn.halfedge_edge[h + kAhead / 2];
+        if (e2 != kInvalidIndex) __builtin_prefetch(input.length.data() + conn.edge_halfedge[e2]);
+      }
+      plain[h] = intrinsic::next_crossed(conn, skipped_face, input.length, h);
+    }
   });
   input.set_direction_bits(std::move(plain), threads);
 }

@@ -6,6 +6,7 @@
 #include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
 #include "parallel_ranges.hpp"
+#include "prefetch_corners.hpp"
 #include "queue_strategies.hpp"
 #include "straight_line_bound.hpp"
 
@@ -119,13 +120,25 @@ struct Triangulation {
       const std::vector<Index> plain = std::move(plain_ring);
       ring.resize(plain.size());
       detail::for_ranges(threads, plain.size(), [&](std::size_t begin, std::size_t end, unsigned) {
-        for (Index h = Index(begin); h < Index(end); ++h) ring[h] = link(h, plain[h], plain[plain[h]]);
+        for (Index h = Index(begin); h < Index(end); ++h) {
+          if (h + detail::kHalfedgesAhead < end) {   // the partner's link and corners ahead
+            const Index g = plain[h + detail::kHalfedgesAhead];
+            __builtin_prefetch(plain.data() + g);
+            __builtin_prefetch(tris.data() + face_of(g));
+          }
+          ring[h] = link(h, plain[h], plain[plain[h]]);
+        }
       });
       return;
     }
     ring = std::move(plain_ring);
     // Links before h already carry bits: masked, every entry reads as its plain index.
     for (Index h = 0; h < Index(ring.size()); ++h) {
+      if (h + detail::kHalfedgesAhead < Index(ring.size())) {
+        const Index ahead = ring[h + detail::kHalfedgesAhead] & detail::kRingIndexMask;
+        __builtin_prefetch(ring.data() + ahead);
+        __builtin_prefetch(tris.data() + face_of(ahead));
+      }
       const Index g = ring[h] & detail::kRingIndexMask;
       ring[h] = link(h, g, ring[g] & detail::kRingIndexMask);
     }
@@ -134,12 +147,17 @@ struct Triangulation {
   void build_corners(std::size_t num_vertices) {
     corner_begin.assign(num_vertices + 1, 0);
     const std::vector<Triangle>& tris = triangles();
-    for (const Triangle& t : tris)
-      for (Index v : t) ++corner_begin[v + 1];
+    for (std::size_t f = 0; f < tris.size(); ++f) {
+      detail::prefetch_corners(tris, corner_begin, f);   // v + 1: the same line or the next
+      for (Index v : tris[f]) ++corner_begin[v + 1];
+    }
     for (std::size_t v = 0; v < num_vertices; ++v) corner_begin[v + 1] += corner_begin[v];
     corners.resize(3 * tris.size());
     std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
-    for (Index c = 0; c < Index(corners.size()); ++c) corners[fill[tris[face_of(c)][corner_of(c)]]++] = c;
+    for (Index f = 0; f < Index(tris.size()); ++f) {
+      detail::prefetch_corners(tris, fill, f);
+      for (Index i = 0; i < 3; ++i) corners[fill[tris[f][i]]++] = 3 * f + i;
+    }
   }
 };
 
