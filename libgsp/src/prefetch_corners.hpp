@@ -3,9 +3,8 @@
 // records (internal). Where the file's vertex order is not the faces' order (new vertices
 // appended after old ones, as midpoint splits and many exporters leave them), each corner's
 // record is a cache miss, and the loop waits on one face's misses at a time: asking for the
-// corners of the face kFacesAhead further on keeps several in flight. Measured on a
-// 557k-vertex split bunny (docs/scale.md, session 19): the corner angle sums 0.45-0.65 ->
-// 0.21-0.38 s, a volume pass 0.12-0.19 -> 0.03-0.08 s. Results do not change: only loads are added.
+// corners of the face kFacesAhead further on keeps several in flight (docs/scale.md, "Software
+// prefetch", has the measurements). Results do not change: only loads are added.
 #include <gsp/types.hpp>
 
 #include <cstddef>
