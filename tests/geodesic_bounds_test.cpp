@@ -131,6 +131,48 @@ TEST(GeodesicBounds, BuiltMeshesKeepBothBounds) {
     }
 }
 
+// Where the two bounds meet, a vertex one edge from a vertex source, the value is the edge's
+// length in double (as Dijkstra's), not the float propagation's rounding of it (about 1e-7
+// relative): a single triangle, a tetrahedron and a soup of triangles, where every vertex is
+// such a vertex, give Dijkstra's values; on a grid the source's ring does, in full and
+// bounded queries alike, and a second source next to the first keeps its own 0.
+TEST(GeodesicBounds, SourceEdgesAreExact) {
+  TriangleMesh scaled = test::single_triangle();   // lengths no float holds
+  for (Vec3& p : scaled.positions) p = p * 0.7310585786300049 + Vec3{0.1, 0.2, 0.3};
+  const std::vector<TriangleMesh> meshes = {scaled, test::tetrahedron(), test::explode(test::icosphere(1))};
+  for (std::size_t k = 0; k < meshes.size(); ++k)
+    for (Index s = 0; s < 3; ++s) {
+      const std::vector<double> edge = DijkstraSolver(meshes[k]).compute({Source::at_vertex(s)}).vertex_distance;
+      const std::vector<double> d = geodesic_distances(meshes[k], {Source::at_vertex(s)}).vertex_distance;
+      for (std::size_t v = 0; v < edge.size(); ++v)
+        if (std::isfinite(edge[v])) EXPECT_DOUBLE_EQ(d[v], edge[v]) << "mesh " << k << " source " << s << " vertex " << v;
+    }
+
+  const TriangleMesh g = test::grid(8);   // 9 x 9 vertices, cells of 1
+  const GeodesicSolver solver(g);
+  const Index centre = 4 * 9 + 4, right = centre + 1;
+  const GeodesicResult r = solver.compute({Source::at_vertex(centre)});
+  EXPECT_EQ(r.vertex_distance[centre + 9], 1.0);
+  EXPECT_EQ(r.vertex_distance[right], 1.0);
+  EXPECT_EQ(r.vertex_distance[centre + 10], std::sqrt(2.0));   // the cell's diagonal a-c
+  LocalWorkspace ws = solver.make_workspace();
+  GeodesicOptions within;
+  within.max_distance = 3;
+  const LocalField local = solver.compute_local({Source::at_vertex(centre)}, within, ws);
+  std::size_t ring = 0;
+  for (std::size_t k = 0; k < local.vertices.size(); ++k) {
+    const Index v = local.vertices[k];
+    if (v != right && v != centre + 9 && v != centre + 10) continue;
+    ++ring;
+    EXPECT_EQ(local.vertex_distance[k], v == centre + 10 ? std::sqrt(2.0) : 1.0) << "vertex " << v;
+  }
+  EXPECT_EQ(ring, 3u);
+  const GeodesicResult two = solver.compute({Source::at_vertex(centre), Source::at_vertex(right)});
+  EXPECT_EQ(two.vertex_distance[right], 0.0);
+  EXPECT_EQ(two.vertex_source[right], 1u);
+  EXPECT_EQ(two.vertex_distance[centre], 0.0);
+}
+
 // Every mesh file of a folder (not point clouds), as the apps load them.
 std::vector<std::string> mesh_files(const std::string& folder) {
   std::vector<std::string> files;

@@ -6,6 +6,7 @@
 #include "query_propagate.hpp"
 #include "query_seed.hpp"
 #include "solver_impl.hpp"
+#include "source_edges.hpp"
 #include "straight_line_bound.hpp"
 #include "validate_options.hpp"
 #include "validate_sources.hpp"
@@ -150,6 +151,15 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
     // A vertex source's own value is exact and wins, as in compute().
     for (const VertexSeed& vs : ws.vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
   }
+  // The source's edges in double, as in compute() (source_edges.hpp).
+  if (options.vertex_relaxation)
+    for (const VertexSeed& e : detail::source_edge_values(input, skipped_face, ws.vertex_seeds)) {
+      double& d = values.vdist[e.vertex];
+      if (!(e.value <= options.max_distance) || !detail::settles_to_edge<Real>(d, e.value)) continue;
+      if (d == std::numeric_limits<double>::infinity()) values.vertices.push_back(e.vertex);
+      d = e.value;
+      values.vlabel[e.vertex] = e.label;
+    }
 
   gather_local<Real>(buf.state.data(), values, options, result);
   return result;

@@ -5,6 +5,7 @@
 // when asked for). A bounded query's gather, sparse over what it reached, is here too
 // (gather_reached, gather_local).
 #include "solver_impl.hpp"
+#include "source_edges.hpp"
 #include "virtual_source.hpp"
 
 #include <algorithm>
@@ -107,6 +108,15 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
     result.vertex_distance[in] = keep ? vs.value : inf_d;
     result.vertex_source[in] = keep ? vs.label : kInvalidIndex;
   }
+  // The vertices one input edge from a vertex source: that edge's length in double where it
+  // is the shortest path (source_edges.hpp); a part of the relaxation.
+  if (relax)
+    for (const VertexSeed& e : detail::source_edge_values(input, skipped_face, seeds)) {
+      const Index in = maps.vertex_to_input(e.vertex);
+      if (!(e.value <= cutoff) || !detail::settles_to_edge<Real>(result.vertex_distance[in], e.value)) continue;
+      result.vertex_distance[in] = e.value;
+      result.vertex_source[in] = e.label;
+    }
   if (options.want_face_distances) {
     // On the flipped triangulation an input face's value comes from its corners' distances
     // (before the cutoff, the vertex sources included), by layout index.
