@@ -155,6 +155,9 @@ TEST(CvtSurface, NonOrientableKeptAndOptionsChecked) {
   ASSERT_EQ(r.mesh.num_faces(), m.num_faces());   // the same triangles (renumbered vertices)
   for (std::size_t f = 0; f < m.num_faces(); ++f)
     for (int k = 0; k < 3; ++k) EXPECT_EQ(r.mesh.positions[r.mesh.triangles[f][k]], m.positions[m.triangles[f][k]]);
+  cvt::SurfaceRemeshOptions bad = o;
+  bad.retry_defect_fraction = std::nan("");
+  EXPECT_THROW(cvt::remesh_surface(m, bad), InvalidInput);
   o.cvt.edge_length = 0.1;   // both given
   EXPECT_THROW(cvt::remesh_surface(m, o), InvalidInput);
 }
@@ -173,11 +176,25 @@ TEST(CvtSurface, ClosingRoundsKeepAThinTubesTopology) {
   const cvt::SurfaceRemeshResult open = cvt::remesh_surface(m, o);
   ASSERT_EQ(open.components.size(), 1u);
   EXPECT_EQ(open.components[0].outcome, ComponentOutcome::kept_topology) << open.components[0].reason;
+  // Its dual is broken at more than 1% of the sites: not remeshed again from other initial
+  // sites (SurfaceRemeshOptions::retries). Where any defect counts as local, it is, twice, and
+  // the reason says so.
+  EXPECT_EQ(open.components[0].retries, 0u);
+  cvt::SurfaceRemeshOptions again = o;
+  again.retry_defect_fraction = 1;
+  const cvt::SurfaceRemeshResult retried = cvt::remesh_surface(m, again);
+  EXPECT_EQ(retried.components[0].outcome, ComponentOutcome::kept_topology);
+  EXPECT_EQ(retried.components[0].retries, 2u);
+  EXPECT_NE(retried.components[0].reason.find("2 more from other initial sites"), std::string::npos)
+      << retried.components[0].reason;
+  again.retries = 0;
+  EXPECT_EQ(cvt::remesh_surface(m, again).components[0].retries, 0u);
 
   o.cvt.closing_rounds = 16;
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
   ASSERT_EQ(r.components.size(), 1u);
   EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed) << r.components[0].reason;
+  EXPECT_EQ(r.components[0].retries, 0u);
   EXPECT_GT(r.cvt_stats.closing_sites, 0u);
   EXPECT_LE(double(r.cvt_stats.closing_sites), o.cvt.max_closing_fraction * 80);
   expect_clean(r.mesh);

@@ -105,6 +105,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
     j["outcome"] = cvt::outcome_name(c.outcome);
     j["reason"] = c.reason;
     j["features_dropped"] = c.features_dropped;
+    j["retries"] = c.retries;
     row.components.push_back(std::move(j));
   }
   return row;

@@ -104,6 +104,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
     j["sites"] = c.sites;
     j["faces_flipped"] = c.faces_flipped;
     j["features_dropped"] = c.features_dropped;
+    j["retries"] = c.retries;
     j["output_vertices"] = c.output_vertices;
     j["output_faces"] = c.output_faces;
     j["outcome"] = cvt::outcome_name(c.outcome);
@@ -117,6 +118,11 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (!kept.empty() && kept.size() == r.components.size())
     throw Error("no component could be remeshed; " + kept.front() + (kept.size() > 1 ? "; ..." : ""));
   for (std::size_t i = 0; i < kept.size() && i < 20; ++i) ctx.note("kept as it is: " + kept[i]);
+  std::size_t retried = 0;
+  for (const cvt::ComponentReport& c : r.components) retried += c.retries && c.outcome == cvt::ComponentOutcome::remeshed;
+  if (retried)
+    ctx.note(std::to_string(retried) + " components remeshed from other initial sites (the first remesh did not have the "
+                                       "component's topology)");
   std::size_t dropped = 0;
   for (const cvt::ComponentReport& c : r.components) dropped += c.features_dropped && c.outcome == cvt::ComponentOutcome::remeshed;
   if (dropped)

@@ -197,17 +197,22 @@ std::size_t duplicate_vertices(const TriangleMesh& mesh) {
   return duplicates;
 }
 
-bool same_topology_per_component(const TriangleMesh& input, const TriangleMesh& output, std::string* why) {
-  auto fail = [&](std::string text) {
+bool same_topology_per_component(const TriangleMesh& input, const TriangleMesh& output, std::string* why,
+                                 std::size_t* defects) {
+  auto fail = [&](std::string text, std::size_t places = 0) {
     if (why) *why = std::move(text);
+    if (defects) *defects = places;
     return false;
   };
+  if (defects) *defects = 0;
   const TopologyReport out = analyze_topology(output, build_connectivity(output));
   if (!out.is_manifold())
     return fail(std::to_string(out.nonmanifold_edges) + " non-manifold edges, " +
-                std::to_string(out.nonmanifold_vertices) + " non-manifold vertices");
-  if (out.inconsistent_edges) return fail(std::to_string(out.inconsistent_edges) + " inconsistently oriented edges");
-  if (const std::size_t d = duplicate_vertices(output)) return fail(std::to_string(d) + " duplicate vertices");
+                    std::to_string(out.nonmanifold_vertices) + " non-manifold vertices",
+                out.nonmanifold_edges + out.nonmanifold_vertices);
+  if (out.inconsistent_edges)
+    return fail(std::to_string(out.inconsistent_edges) + " inconsistently oriented edges", out.inconsistent_edges);
+  if (const std::size_t d = duplicate_vertices(output)) return fail(std::to_string(d) + " duplicate vertices", d);
   const std::vector<Signature> a = signatures(split_components(input)), b = signatures(split_components(output));
   if (a.size() != b.size())
     return fail(std::to_string(b.size()) + " components instead of " + std::to_string(a.size()));

@@ -144,6 +144,8 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   const CvtOptions& co = options.cvt;
   if ((co.sites > 0) == (co.edge_length > 0)) throw InvalidInput("cvt: give exactly one of sites and edge_length");
   if (co.edge_length > 0 && !std::isfinite(co.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
+  if (!(options.retry_defect_fraction >= 0))
+    throw InvalidInput("cvt: the retries' defect fraction must be 0 or more");
   // The surface the input describes: one vertex per fan where fans touch at a vertex.
   const VertexSplit fans = split_nonmanifold_vertices(mesh);
   const ComponentSplit split = split_components(fans.mesh);
@@ -194,6 +196,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
         CvtOptions c = co;
         c.sites = n;
         c.edge_length = 0;
+        std::size_t defects = 0;   // of the last attempt (same_topology_per_component)
         auto attempt = [&](CvtResult& cvt, RemeshResult& r, std::string& why) {
           auto t0 = Clock::now();
           cvt = compute_cvt(oriented, c);
@@ -201,7 +204,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
           t0 = Clock::now();
           r = restricted_delaunay(cvt, options.remesh);
           rep.remesh_seconds += seconds_since(t0);
-          return same_topology_per_component(oriented, r.mesh, &why);
+          return same_topology_per_component(oriented, r.mesh, &why, &defects);
         };
         CvtResult cvt;
         RemeshResult r;
@@ -215,9 +218,19 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
           rep.features_dropped = true;
           ok = attempt(cvt, r, why);
         }
+        // Other initial sites only where a few places went wrong (SurfaceRemeshOptions::retries).
+        const std::size_t local_defects =
+            std::max<std::size_t>(1, std::size_t(options.retry_defect_fraction * double(n)));
+        for (std::size_t k = 1; !ok && defects <= local_defects && k <= options.retries; ++k) {
+          c.seed = co.seed + k;
+          ++rep.retries;
+          ok = attempt(cvt, r, why);
+        }
         out.remesh_seconds += rep.remesh_seconds;
         if (!ok) {
-          keep(ComponentOutcome::kept_topology, "the remesh had " + why);
+          keep(ComponentOutcome::kept_topology,
+               "the remesh had " + why +
+                   (rep.retries ? " (and " + std::to_string(rep.retries) + " more from other initial sites)" : ""));
         } else {
           for (std::size_t v = 0; v < input.num_vertices(); ++v)
             if (cvt.vertex_label[v] != kInvalidIndex)

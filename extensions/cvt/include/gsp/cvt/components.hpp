@@ -60,7 +60,10 @@ std::size_t duplicate_vertices(const TriangleMesh& mesh);
 // Multiset comparison of the per-component (Euler characteristic, boundary loops) of two
 // meshes, plus manifoldness, consistent orientation and duplicate vertices of `output`: true
 // when `output` is a manifold, consistently oriented surface with the topology of `input`
-// component by component. `why` gets the first difference found.
-bool same_topology_per_component(const TriangleMesh& input, const TriangleMesh& output, std::string* why = nullptr);
+// component by component. `why` gets the first difference found; `defects`, when given, how
+// many places of `output` are wrong (non-manifold edges and vertices, inconsistently oriented
+// edges, duplicate vertices; 0 when only the components' topology differs).
+bool same_topology_per_component(const TriangleMesh& input, const TriangleMesh& output, std::string* why = nullptr,
+                                 std::size_t* defects = nullptr);
 
 }  // namespace gsp::cvt

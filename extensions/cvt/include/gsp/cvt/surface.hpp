@@ -28,6 +28,16 @@ struct SurfaceRemeshOptions {
   // of so few regions cannot be trusted to have the component's topology (a closed surface
   // needs at least 4, a torus many more).
   std::size_t min_component_sites = 20;
+  // A component whose remesh lacks its topology at a few places only (at most
+  // retry_defect_fraction of its sites, at least one, are non-manifold or otherwise wrong, or
+  // only its Euler characteristic or loops differ) is remeshed again from other initial sites
+  // (CvtOptions::seed + 1, + 2, ...) up to `retries` times before it is kept as it was: such a
+  // dual went wrong at a few regions whose shape depends on where the sites started (and, on
+  // two threads, on the order in which ties in the propagation fell). A dual broken all over
+  // a region (a CAD part's flat face fanned into slivers) breaks again from any start, and
+  // each try costs a whole CVT, so those are not tried again.
+  std::size_t retries = 2;
+  double retry_defect_fraction = 0.01;
 };
 
 enum class ComponentOutcome {
@@ -50,6 +60,7 @@ struct ComponentReport {
   // The remesh with CvtOptions::feature_angle did not have the component's topology, so it was
   // remeshed without its features (sharp edges chamfered as with feature_angle = 0).
   bool features_dropped = false;
+  std::size_t retries = 0;                 // remeshes from other initial sites (SurfaceRemeshOptions::retries)
   std::size_t output_vertices = 0, output_faces = 0;
   ComponentOutcome outcome = ComponentOutcome::remeshed;
   std::string reason;                      // empty when remeshed
