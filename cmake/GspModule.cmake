@@ -33,7 +33,8 @@ endfunction()
 # gsp_app(name SOURCES ... DEPS ...): one executable in build/bin, installed to bin/.
 function(gsp_app NAME)
   cmake_parse_arguments(A "" "" "SOURCES;DEPS" ${ARGN})
-  add_executable(${NAME} ${A_SOURCES})
+  # Every app allocates its big arrays on huge pages (apps/common/huge_page_new.cpp).
+  add_executable(${NAME} ${A_SOURCES} ${PROJECT_SOURCE_DIR}/apps/common/huge_page_new.cpp)
   target_link_libraries(${NAME} PRIVATE ${A_DEPS})
   target_compile_options(${NAME} PRIVATE ${GSP_WARNINGS})
   install(TARGETS ${NAME} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -1,0 +1,74 @@
+// The apps' operator new (apps/common/huge_page_new.cpp, compiled into this test as into every
+// app): big allocations start on a 2 MB boundary (where a huge page can back them) and, where
+// the kernel's transparent huge pages are on or on request, are backed by huge pages once
+// touched; small ones are plain malloc; every one is released by the ordinary delete.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr std::uintptr_t kHugePage = std::uintptr_t(2) << 20;
+
+// This process's AnonHugePages in kB (/proc/self/smaps_rollup), or -1 where it cannot be read.
+long anon_huge_kb() {
+  std::ifstream in("/proc/self/smaps_rollup");
+  std::string key;
+  long value = -1;
+  while (in >> key) {
+    if (key == "AnonHugePages:") {
+      in >> value;
+      return value;
+    }
+    in.ignore(1 << 12, '\n');
+  }
+  return -1;
+}
+
+std::string thp_mode() {
+  std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+TEST(AppHugePages, BigArraysStartOnAHugePageBoundary) {
+  for (std::size_t mb : {8, 9, 64}) {
+    std::vector<std::uint8_t> big(mb << 20);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage, 0u) << mb << " MB";
+  }
+  const std::unique_ptr<char[]> array(new char[std::size_t(16) << 20]);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(array.get()) % kHugePage, 0u);
+  // Small ones are malloc's: nothing forces them onto the boundary.
+  std::size_t aligned = 0;
+  std::vector<std::unique_ptr<std::uint64_t[]>> small;
+  for (int i = 0; i < 64; ++i) {
+    small.emplace_back(new std::uint64_t[1000]);
+    aligned += reinterpret_cast<std::uintptr_t>(small.back().get()) % kHugePage == 0;
+  }
+  EXPECT_LT(aligned, 64u);
+  char* nothrow = new (std::nothrow) char[std::size_t(32) << 20];
+  ASSERT_NE(nothrow, nullptr);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(nothrow) % kHugePage, 0u);
+  delete[] nothrow;
+}
+
+TEST(AppHugePages, TouchedBigArraysAreBackedByHugePages) {
+  const std::string mode = thp_mode();
+  if (mode.find("[never]") != std::string::npos || mode.empty() || anon_huge_kb() < 0)
+    GTEST_SKIP() << "transparent huge pages off or not reported here: " << mode;
+  const long before = anon_huge_kb();
+  std::vector<std::uint8_t> big(std::size_t(64) << 20);
+  std::memset(big.data(), 1, big.size());
+  // Where the kernel has no huge page at hand it falls back to small pages; most of 64 MB is
+  // still expected on huge ones on an idle machine.
+  EXPECT_GE(anon_huge_kb() - before, 32 * 1024) << mode;
+}
+
+}  // namespace
