@@ -130,6 +130,30 @@ TEST_F(RoundTrip, AttributesThroughPlyAndGltf) {
   expect_attributes(read_mesh(path("attr.glb")), m, a, true, "GLB");
 }
 
+// A binary PLY body larger than the writer's 4 MB buffer (written out in several pieces, the
+// last one partial) and one smaller than it: every vertex, value and face comes back.
+TEST_F(RoundTrip, BinaryPlyAcrossTheWritersBuffer) {
+  for (std::size_t n : {std::size_t(3), std::size_t(300001)}) {
+    TriangleMesh m;
+    gsp::io::VertexAttributes a;
+    a.scalars = {{"distance", {}}};
+    for (std::size_t i = 0; i < n; ++i) {
+      m.positions.push_back({double(i), 0.5 * double(i % 7), -double(i % 13)});
+      a.scalars[0].second.push_back(float(i) * 0.25f);
+    }
+    for (std::size_t i = 0; i + 2 < n; i += 2) m.triangles.push_back({gsp::Index(i), gsp::Index(i + 1), gsp::Index(i + 2)});
+    write_mesh(path("big.ply"), m, a);
+    const gsp::io::ReadResult r = read_mesh(path("big.ply"));
+    ASSERT_EQ(r.mesh.num_vertices(), n);
+    ASSERT_EQ(r.mesh.triangles, m.triangles);
+    ASSERT_EQ(r.attributes.scalars.size(), 1u);
+    for (std::size_t i = 0; i < n; ++i) {
+      ASSERT_EQ(r.mesh.positions[i], to_float(m.positions[i])) << i;
+      ASSERT_EQ(r.attributes.scalars[0].second[i], a.scalars[0].second[i]) << i;
+    }
+  }
+}
+
 TEST_F(RoundTrip, ColoursThroughObjAndCoff) {
   const TriangleMesh m = sample_mesh();
   auto a = sample_attributes();
