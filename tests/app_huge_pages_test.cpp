@@ -38,7 +38,15 @@ std::string thp_mode() {
   return line;
 }
 
+// Sanitizer builds keep the sanitizer's operator new (huge_page_new.cpp says why).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kReplaced = false;
+#else
+constexpr bool kReplaced = true;
+#endif
+
 TEST(AppHugePages, BigArraysStartOnAHugePageBoundary) {
+  if (!kReplaced) GTEST_SKIP() << "sanitizer build: the sanitizer's operator new";
   for (std::size_t mb : {8, 9, 64}) {
     std::vector<std::uint8_t> big(mb << 20);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage, 0u) << mb << " MB";
@@ -60,6 +68,7 @@ TEST(AppHugePages, BigArraysStartOnAHugePageBoundary) {
 }
 
 TEST(AppHugePages, TouchedBigArraysAreBackedByHugePages) {
+  if (!kReplaced) GTEST_SKIP() << "sanitizer build: the sanitizer's operator new";
   const std::string mode = thp_mode();
   if (mode.find("[never]") != std::string::npos || mode.empty() || anon_huge_kb() < 0)
     GTEST_SKIP() << "transparent huge pages off or not reported here: " << mode;

@@ -19,6 +19,17 @@
 #include <sys/mman.h>
 #endif
 
+// Sanitizer builds (GSP_SANITIZE) keep the sanitizer's own operator new: AddressSanitizer
+// would see malloc'd memory released by operator delete and report a mismatch.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define GSP_KEEP_OPERATOR_NEW 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+#define GSP_KEEP_OPERATOR_NEW 1
+#endif
+#endif
+
+#if !defined(GSP_KEEP_OPERATOR_NEW)
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
@@ -65,3 +76,4 @@ void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
     return nullptr;
   }
 }
+#endif  // !GSP_KEEP_OPERATOR_NEW
