@@ -1,5 +1,7 @@
 # gsp::cvt: geodesic CVT (Lloyd with GSP), restricted Delaunay remeshing, quality figures; gsp-cvt.
 gsp_test(cvt_test SOURCES cvt_test.cpp DEPS gsp::cvt gsp::io)
+gsp_test(cvt_child_faces_test SOURCES cvt_child_faces_test.cpp DEPS gsp::cvt)
+target_include_directories(cvt_child_faces_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
 gsp_test(cvt_quality_test SOURCES cvt_quality_test.cpp DEPS gsp::cvt gsp::io)
 gsp_test(cvt_remesh_test SOURCES cvt_remesh_test.cpp DEPS gsp::cvt gsp::io)
 gsp_test(cvt_boundary_test SOURCES cvt_boundary_test.cpp DEPS gsp::cvt gsp::io)

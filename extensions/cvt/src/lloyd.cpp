@@ -2,6 +2,7 @@
 // to its region's centroid projected back onto the region, keep the step only if the energy
 // went down. See docs/cvt.md for the choices made here.
 #include "boundary_loops.hpp"
+#include "child_faces.hpp"
 #include "feature_sites.hpp"
 #include "junctions.hpp"
 #include "regions.hpp"
@@ -408,23 +409,9 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
     return sites;
   }
   const sampling::Sampler sampler(mesh);
-  // Working faces per input face, CSR.
-  std::vector<Index> begin(mesh.num_faces() + 1, 0), children(w.parent.size());
-  for (Index p : w.parent) ++begin[p + 1];
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) begin[f + 1] += begin[f];
-  std::vector<Index> fill(begin.begin(), begin.end() - 1);
-  for (Index f = 0; f < w.parent.size(); ++f) children[fill[w.parent[f]]++] = f;
-  for (const sampling::Sample& s : sampler.sample(so).samples) {
-    SurfaceSite best;
-    double best_d = std::numeric_limits<double>::infinity();
-    for (Index i = begin[s.point.element]; i < begin[s.point.element + 1]; ++i) {
-      const Index f = children[i];
-      const SurfaceSite q = g.closest_on_face(f, s.position);
-      const double d = distance(q.position, s.position);
-      if (d < best_d) best_d = d, best = q;
-    }
-    sites.push_back(best);
-  }
+  const ChildFaces children(w, mesh.num_faces());
+  for (const sampling::Sample& s : sampler.sample(so).samples)
+    sites.push_back(children.closest(g, s.point.element, s.point.barycentric, s.position));
   // The radius search meets the count within 2%: trim the last accepted samples (the vertex
   // fill, which plugs the smallest gaps) or add area-uniform points; Lloyd evens both out.
   if (sites.size() > n) sites.resize(n);
