@@ -1,5 +1,6 @@
 // gsp::sampling: Poisson-disk and farthest-point sampling, checked on a closed genus-4 scan,
 // a shared remesh, a flat disk of equal area, and a thin-walled tube.
+#include "helpers/mesh_builders.hpp"
 #include "sampling_meshes.hpp"
 #include "test_data.hpp"
 
@@ -10,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -134,6 +137,34 @@ TEST(SamplingPoisson, CountIsMetWithinOnePercent) {
     EXPECT_LE(std::abs(double(r.samples.size()) - double(n)), 0.01 * double(n)) << r.samples.size();
     EXPECT_GT(r.stats.search_iterations, 0);
   }
+}
+
+// Faces far larger than the radius hold thousands of samples each (a square of two
+// triangles, a tetrahedron of four faces); the field then keeps their sources and samples in
+// cubes of side r (coverage_field.hpp). On the plane every pair must still be r apart (GSP is
+// exact there up to float rounding); on the tetrahedron the double-precision check of the
+// other tests applies.
+TEST(SamplingPoisson, LargeFacesHoldManySamples) {
+  const TriangleMesh square = test::quad();
+  Sampler sampler(square);
+  SamplingOptions o;
+  o.radius = 0.02;
+  const auto r = sampler.sample(o);
+  ASSERT_GT(r.samples.size(), 1000u);
+  std::vector<Vec3> p;
+  for (const auto& s : r.samples) p.push_back(s.position);
+  std::sort(p.begin(), p.end(), [](Vec3 a, Vec3 b) { return a.x < b.x; });
+  double closest = 1;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x < o.radius; ++j) closest = std::min(closest, distance(p[i], p[j]));
+  EXPECT_GE(closest, 0.999 * o.radius);
+
+  const TriangleMesh tetra = test::tetrahedron();
+  Sampler on_tetra(tetra);
+  o.radius = 0.02 * on_tetra.diagonal();
+  const auto t = on_tetra.sample(o);
+  ASSERT_GT(t.samples.size(), 1000u);
+  EXPECT_GE(min_separation(tetra, t, 50), 0.95 * o.radius);
 }
 
 TEST(SamplingPoisson, ExactCountKeepsTheRadius) {

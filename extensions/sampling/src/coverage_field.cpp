@@ -12,6 +12,13 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
       centroid_radius_(mesh.num_faces(), 0.0),
       head_(mesh.num_faces(), -1),
       sample_head_(mesh.num_faces(), -1),
+      source_count_(mesh.num_faces(), 0),
+      sample_count_(mesh.num_faces(), 0),
+      dense_sources_(mesh.num_faces(), false),
+      dense_samples_(mesh.num_faces(), false),
+      source_cells_(radius),
+      sample_cells_(radius),
+      mesh_(mesh),
       referenced_(referenced),
       radius_(radius) {
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
@@ -30,6 +37,15 @@ bool CoverageField::clear_of_samples(const LocalField& run, const TriangleMesh& 
     const Index f = run.faces[k];
     if (sample_head_[f] < 0 || !near(run, k)) continue;
     const VirtualSource& vs = run.face_sources[k];
+    bool close = false;
+    if (dense_samples_[f]) {
+      // A sample closer than r - sigma to the source lies in the cubes around it.
+      sample_cells_.near(f, vs.position, [&](std::int32_t e) {
+        close = close || vs.sigma + distance(sample_position_[e], vs.position) < radius_;
+      });
+      if (close) return false;
+      continue;
+    }
     for (std::int32_t e = sample_head_[f]; e >= 0; e = samples_[e].next) {
       const Vec3 p = SurfacePoint::in_face(f, samples_[e].barycentric).position(mesh);
       if (vs.sigma + distance(p, vs.position) < radius_) return false;
@@ -41,6 +57,25 @@ bool CoverageField::clear_of_samples(const LocalField& run, const TriangleMesh& 
 void CoverageField::add_sample(Index face, const std::array<double, 3>& barycentric) {
   samples_.push_back({barycentric, sample_head_[face]});
   sample_head_[face] = std::int32_t(samples_.size() - 1);
+  sample_position_.push_back(SurfacePoint::in_face(face, barycentric).position(mesh_));
+  if (dense_samples_[face]) {
+    sample_cells_.add(face, sample_position_.back(), std::int32_t(samples_.size() - 1));
+  } else if (++sample_count_[face] > kDense) {
+    dense_samples_[face] = true;
+    for (std::int32_t e = sample_head_[face]; e >= 0; e = samples_[e].next)
+      sample_cells_.add(face, sample_position_[e], e);
+  }
+}
+
+void CoverageField::add_source(Index face, Vec3 position, double sigma) {
+  pool_.push_back({position, sigma, head_[face]});
+  head_[face] = std::int32_t(pool_.size() - 1);
+  if (dense_sources_[face]) {
+    source_cells_.add(face, position, head_[face]);
+  } else if (++source_count_[face] > kDense) {
+    dense_sources_[face] = true;
+    for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) source_cells_.add(face, pool_[e].position, e);
+  }
 }
 
 void CoverageField::merge(const LocalField& run) {
@@ -54,8 +89,7 @@ void CoverageField::merge(const LocalField& run) {
   for (std::size_t k = 0; k < run.faces.size(); ++k) {
     if (!near(run, k)) continue;
     const VirtualSource& vs = run.face_sources[k];
-    pool_.push_back({vs.position, vs.sigma, head_[run.faces[k]]});
-    head_[run.faces[k]] = std::int32_t(pool_.size() - 1);
+    add_source(run.faces[k], vs.position, vs.sigma);
   }
 }
 

@@ -4,7 +4,11 @@
 // every run that reached it closely enough, so the distance at any point of a face is
 // min over them of sigma + |p - S|. A linked list per face in one pool: faces far from
 // every sample cost one index, and a face is near only a bounded number of samples that are
-// r apart.
+// r apart. A face larger than r holds more (a CAD part's flat faces, a single triangle: all
+// of them); past kDense its sources and samples go into cubes of side r (FaceCells) and
+// only those around a point are read.
+#include "face_cells.hpp"
+
 #include <gsp/geodesics.hpp>
 
 #include <array>
@@ -32,13 +36,18 @@ class CoverageField {
   // Cost: the run's neighbourhood (compute_local lists only what it reached).
   void merge(const LocalField& run);
 
-  // Distance from the point p of face f to the nearest sample so far (+inf if none near).
+  // Distance from the point p of face f to the nearest sample so far, exact where it is
+  // below r; at or above r it may be any value at or above r (+inf if none near).
   double distance_at(Index face, Vec3 p) const {
     double best = std::numeric_limits<double>::infinity();
-    for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) {
+    auto take = [&](std::int32_t e) {
       const double d = pool_[e].sigma + distance(p, pool_[e].position);
       if (d < best) best = d;
-    }
+    };
+    if (dense_sources_[face])
+      source_cells_.near(face, p, take);
+    else
+      for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) take(e);
     return best;
   }
 
@@ -56,6 +65,8 @@ class CoverageField {
   bool near(const LocalField& run, std::size_t k) const {
     return run.face_distance[k] - centroid_radius_[run.faces[k]] < radius_;
   }
+  static constexpr std::uint32_t kDense = 16;   // items a face keeps in its list
+  void add_source(Index face, Vec3 position, double sigma);
   std::vector<double> vertex_;
   std::vector<double> centroid_radius_;   // per face: largest centroid-to-corner distance
   std::vector<std::int32_t> head_;
@@ -66,6 +77,12 @@ class CoverageField {
   };
   std::vector<std::int32_t> sample_head_;   // per face: first sample in it, -1 if none
   std::vector<SampleEntry> samples_;
+  std::vector<Vec3> sample_position_;
+  // Per face: items so far, and whether they are in the cubes (then the lists are not read).
+  std::vector<std::uint32_t> source_count_, sample_count_;
+  std::vector<bool> dense_sources_, dense_samples_;
+  FaceCells source_cells_, sample_cells_;
+  const TriangleMesh& mesh_;
   const std::vector<bool>& referenced_;
   double radius_;
   std::size_t uncovered_ = 0, referenced_count_ = 0;
