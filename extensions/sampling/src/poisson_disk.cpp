@@ -82,24 +82,48 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
 
   // Candidates come in batches, each processed in the solver's cache layout order: runs then
   // sweep the memory forward instead of jumping at random (the dart throwing stays the same:
-  // each candidate is accepted iff no earlier sample is within r).
+  // each candidate is accepted iff no earlier sample is within r). Darts stop after
+  // max_rejections in a row, or once every vertex is within r of a sample.
   std::vector<Sample> batch;
   std::size_t rejected_in_a_row = 0;
-  while (rejected_in_a_row < options.max_rejections && field.uncovered() > 0) {
-    batch.clear();
-    for (std::size_t i = 0; i < kBatch; ++i) batch.push_back(points_.draw(mesh_, random));
-    std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) {
-      return solver_.face_memory_rank(a.point.element) < solver_.face_memory_rank(b.point.element);
-    });
-    for (const Sample& s : batch) {
-      if (rejected_in_a_row >= options.max_rejections || field.uncovered() == 0) break;
-      ++result.stats.candidates;
-      if (field.distance_at(s.point.element, s.position) < radius || !accept(s)) {
-        ++result.stats.rejected;
-        ++rejected_in_a_row;
-        continue;
+  auto throw_darts = [&](const AreaSampler& from, bool until_vertices_covered) {
+    auto open = [&] { return !until_vertices_covered || field.uncovered() > 0; };
+    while (rejected_in_a_row < options.max_rejections && open()) {
+      batch.clear();
+      for (std::size_t i = 0; i < kBatch; ++i) batch.push_back(from.draw(mesh_, random));
+      std::stable_sort(batch.begin(), batch.end(), [&](const Sample& a, const Sample& b) {
+        return solver_.face_memory_rank(a.point.element) < solver_.face_memory_rank(b.point.element);
+      });
+      for (const Sample& s : batch) {
+        if (rejected_in_a_row >= options.max_rejections || !open()) break;
+        ++result.stats.candidates;
+        if (field.distance_at(s.point.element, s.position) < radius || !accept(s)) {
+          ++result.stats.rejected;
+          ++rejected_in_a_row;
+          continue;
+        }
+        rejected_in_a_row = 0;
       }
-      rejected_in_a_row = 0;
+    }
+  };
+  throw_darts(points_, true);
+  // Covered vertices stand for a covered surface only where faces are smaller than r: a
+  // face with a longer edge (a CAD part's flat faces, a single triangle) has room for more
+  // samples once its corners are covered. Darts go on over those faces alone, until
+  // max_rejections in a row.
+  if (field.uncovered() == 0 && rejected_in_a_row < options.max_rejections) {
+    std::vector<bool> large(mesh_.num_faces(), false);
+    bool any = false;
+    for (std::size_t f = 0; f < mesh_.num_faces(); ++f) {
+      const Triangle& t = mesh_.triangles[f];
+      for (int i = 0; i < 3; ++i)
+        if (distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]) > radius && triangle_area(mesh_, Index(f)) > 0)
+          large[f] = true;
+      any = any || large[f];
+    }
+    if (any) {
+      const AreaSampler large_faces(mesh_, large);
+      throw_darts(large_faces, false);
     }
   }
 

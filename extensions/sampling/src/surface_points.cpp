@@ -25,11 +25,13 @@ Sample make_sample(const TriangleMesh& mesh, Index face, std::array<double, 3> b
   return s;
 }
 
-AreaSampler::AreaSampler(const TriangleMesh& mesh) {
+AreaSampler::AreaSampler(const TriangleMesh& mesh) : AreaSampler(mesh, std::vector<bool>(mesh.num_faces(), true)) {}
+
+AreaSampler::AreaSampler(const TriangleMesh& mesh, const std::vector<bool>& faces) {
   prefix_.resize(mesh.num_faces());
   double sum = 0;
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    sum += triangle_area(mesh, Index(f));
+    if (faces[f]) sum += triangle_area(mesh, Index(f));
     prefix_[f] = sum;
   }
   if (!(sum > 0) || !std::isfinite(sum)) throw InvalidInput("the mesh has no face with a positive area");

@@ -27,6 +27,8 @@ double triangle_area(const TriangleMesh& mesh, Index face);
 class AreaSampler {
  public:
   explicit AreaSampler(const TriangleMesh& mesh);
+  // Only the faces marked in `faces` (one flag per face); the same throw when none has area.
+  AreaSampler(const TriangleMesh& mesh, const std::vector<bool>& faces);
   double total_area() const { return prefix_.empty() ? 0.0 : prefix_.back(); }
   // A face by area, then uniform barycentric weights (the square-root map of Osada et al.).
   Sample draw(const TriangleMesh& mesh, Random& random) const;
