@@ -144,39 +144,38 @@ TEST(SamplingPoisson, CountIsMetWithinOnePercent) {
 // cubes of side r (coverage_field.hpp). On the plane every pair must still be r apart (GSP is
 // exact there up to float rounding); on the tetrahedron the double-precision check of the
 // other tests applies.
-TEST(SamplingPoisson, LargeFacesHoldManySamples) {
-  const TriangleMesh square = test::quad();
-  Sampler sampler(square);
+sampling::SamplingResult poisson_at(const TriangleMesh& mesh, double radius) {
   SamplingOptions o;
-  o.radius = 0.02;
-  const auto r = sampler.sample(o);
+  o.radius = radius;
+  return Sampler(mesh).sample(o);
+}
+
+TEST(SamplingPoisson, LargeFacesHoldManySamples) {
+  const double radius = 0.02;
+  const auto r = poisson_at(test::quad(), radius);
   ASSERT_GT(r.samples.size(), 1000u);
   std::vector<Vec3> p;
   for (const auto& s : r.samples) p.push_back(s.position);
   std::sort(p.begin(), p.end(), [](Vec3 a, Vec3 b) { return a.x < b.x; });
   double closest = 1;
   for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x < o.radius; ++j) closest = std::min(closest, distance(p[i], p[j]));
-  EXPECT_GE(closest, 0.999 * o.radius);
+    for (std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x < radius; ++j) closest = std::min(closest, distance(p[i], p[j]));
+  EXPECT_GE(closest, 0.999 * radius);
 
   const TriangleMesh tetra = test::tetrahedron();
-  Sampler on_tetra(tetra);
-  o.radius = 0.02 * on_tetra.diagonal();
-  const auto t = on_tetra.sample(o);
+  const double tetra_radius = 0.02 * bounding_box(tetra).diagonal();
+  const auto t = poisson_at(tetra, tetra_radius);
   ASSERT_GT(t.samples.size(), 1000u);
-  EXPECT_GE(min_separation(tetra, t, 50), 0.95 * o.radius);
+  EXPECT_GE(min_separation(tetra, t, 50), 0.95 * tetra_radius);
 }
 
 // Covered corners do not make a covered face: on one triangle 50 radii wide the darts go on
 // after its three vertices are within r of a sample (they stopped there before: 642 samples
 // against 765 now and 810 on a finely meshed flat disk of the same area).
 TEST(SamplingPoisson, OneLargeTriangleIsFilled) {
-  const TriangleMesh triangle = test::single_triangle();
-  Sampler sampler(triangle);
-  SamplingOptions o;
-  o.radius = 0.02;
-  const auto r = sampler.sample(o);
-  const double flat = double(disk_count(0.5, o.radius, 1));
+  const double radius = 0.02;
+  const auto r = poisson_at(test::single_triangle(), radius);
+  const double flat = double(disk_count(0.5, radius, 1));
   EXPECT_NEAR(double(r.samples.size()) / flat, 1.0, 0.10) << r.samples.size() << " vs " << flat;
   double hole = 0;   // the largest distance from a point of the triangle to its nearest sample
   for (int i = 0; i <= 100; ++i)
@@ -186,7 +185,7 @@ TEST(SamplingPoisson, OneLargeTriangleIsFilled) {
       for (const auto& s : r.samples) nearest = std::min(nearest, distance(q, s.position));
       hole = std::max(hole, nearest);
     }
-  EXPECT_LT(hole, 2 * o.radius);
+  EXPECT_LT(hole, 2 * radius);
 }
 
 TEST(SamplingPoisson, ExactCountKeepsTheRadius) {
