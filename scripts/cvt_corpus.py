@@ -238,6 +238,8 @@ def before_after(before, after):
 
 
 def main():
+    # A soup of thousands of components writes a long per-component outcome cell.
+    csv.field_size_limit(1 << 30)
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("folders", nargs="*", help="folders of meshes (not recursive)")
     ap.add_argument("--vertices", type=int, default=5000)
