@@ -14,8 +14,6 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
       sample_head_(mesh.num_faces(), -1),
       source_count_(mesh.num_faces(), 0),
       sample_count_(mesh.num_faces(), 0),
-      dense_sources_(mesh.num_faces(), false),
-      dense_samples_(mesh.num_faces(), false),
       source_cells_(radius),
       sample_cells_(radius),
       mesh_(mesh),
@@ -32,50 +30,41 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
   uncovered_ = referenced_count_;
 }
 
-bool CoverageField::clear_of_samples(const LocalField& run, const TriangleMesh& mesh) const {
+bool CoverageField::clear_of_samples(const LocalField& run) const {
   for (std::size_t k = 0; k < run.faces.size(); ++k) {
     const Index f = run.faces[k];
     if (sample_head_[f] < 0 || !near(run, k)) continue;
     const VirtualSource& vs = run.face_sources[k];
     bool close = false;
-    if (dense_samples_[f]) {
-      // A sample closer than r - sigma to the source lies in the cubes around it.
-      sample_cells_.near(f, vs.position, [&](std::int32_t e) {
-        close = close || vs.sigma + distance(sample_position_[e], vs.position) < radius_;
-      });
-      if (close) return false;
-      continue;
-    }
-    for (std::int32_t e = sample_head_[f]; e >= 0; e = samples_[e].next) {
-      const Vec3 p = SurfacePoint::in_face(f, samples_[e].barycentric).position(mesh);
-      if (vs.sigma + distance(p, vs.position) < radius_) return false;
-    }
+    auto check = [&](std::int32_t e) { close = close || vs.sigma + distance(sample_position_[e], vs.position) < radius_; };
+    if (sample_count_[f] > kDense)
+      sample_cells_.near(f, vs.position, check);   // a sample closer than r - sigma lies in the cubes around it
+    else
+      for (std::int32_t e = sample_head_[f]; e >= 0 && !close; e = sample_next_[e]) check(e);
+    if (close) return false;
   }
   return true;
 }
 
 void CoverageField::add_sample(Index face, const std::array<double, 3>& barycentric) {
-  samples_.push_back({barycentric, sample_head_[face]});
-  sample_head_[face] = std::int32_t(samples_.size() - 1);
+  const std::int32_t e = std::int32_t(sample_next_.size());
+  sample_next_.push_back(sample_head_[face]);
+  sample_head_[face] = e;
   sample_position_.push_back(SurfacePoint::in_face(face, barycentric).position(mesh_));
-  if (dense_samples_[face]) {
-    sample_cells_.add(face, sample_position_.back(), std::int32_t(samples_.size() - 1));
-  } else if (++sample_count_[face] > kDense) {
-    dense_samples_[face] = true;
-    for (std::int32_t e = sample_head_[face]; e >= 0; e = samples_[e].next)
-      sample_cells_.add(face, sample_position_[e], e);
-  }
+  if (++sample_count_[face] == kDense + 1)   // from now on in the cubes, these included
+    for (std::int32_t i = e; i >= 0; i = sample_next_[i]) sample_cells_.add(face, sample_position_[i], i);
+  else if (sample_count_[face] > kDense)
+    sample_cells_.add(face, sample_position_[e], e);
 }
 
 void CoverageField::add_source(Index face, Vec3 position, double sigma) {
+  const std::int32_t e = std::int32_t(pool_.size());
   pool_.push_back({position, sigma, head_[face]});
-  head_[face] = std::int32_t(pool_.size() - 1);
-  if (dense_sources_[face]) {
-    source_cells_.add(face, position, head_[face]);
-  } else if (++source_count_[face] > kDense) {
-    dense_sources_[face] = true;
-    for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) source_cells_.add(face, pool_[e].position, e);
-  }
+  head_[face] = e;
+  if (++source_count_[face] == kDense + 1)
+    for (std::int32_t i = e; i >= 0; i = pool_[i].next) source_cells_.add(face, pool_[i].position, i);
+  else if (source_count_[face] > kDense)
+    source_cells_.add(face, position, e);
 }
 
 void CoverageField::merge(const LocalField& run) {

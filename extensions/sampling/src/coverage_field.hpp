@@ -27,7 +27,7 @@ class CoverageField {
   // to b and from b to a can differ by several percent on coarse meshes (one virtual source
   // per face), so the candidate test checks both directions: the field at the candidate
   // (earlier runs) before its run, this after it.
-  bool clear_of_samples(const LocalField& run, const TriangleMesh& mesh) const;
+  bool clear_of_samples(const LocalField& run) const;
   // Registers a sample at (face, barycentric) for clear_of_samples.
   void add_sample(Index face, const std::array<double, 3>& barycentric);
 
@@ -44,7 +44,7 @@ class CoverageField {
       const double d = pool_[e].sigma + distance(p, pool_[e].position);
       if (d < best) best = d;
     };
-    if (dense_sources_[face])
+    if (source_count_[face] > kDense)
       source_cells_.near(face, p, take);
     else
       for (std::int32_t e = head_[face]; e >= 0; e = pool_[e].next) take(e);
@@ -71,16 +71,11 @@ class CoverageField {
   std::vector<double> centroid_radius_;   // per face: largest centroid-to-corner distance
   std::vector<std::int32_t> head_;
   std::vector<Entry> pool_;
-  struct SampleEntry {
-    std::array<double, 3> barycentric;
-    std::int32_t next;
-  };
   std::vector<std::int32_t> sample_head_;   // per face: first sample in it, -1 if none
-  std::vector<SampleEntry> samples_;
+  std::vector<std::int32_t> sample_next_;   // per sample: the next in its face's list
   std::vector<Vec3> sample_position_;
-  // Per face: items so far, and whether they are in the cubes (then the lists are not read).
+  // Per face: items so far; past kDense they are in the cubes (and the lists are not read).
   std::vector<std::uint32_t> source_count_, sample_count_;
-  std::vector<bool> dense_sources_, dense_samples_;
   FaceCells source_cells_, sample_cells_;
   const TriangleMesh& mesh_;
   const std::vector<bool>& referenced_;

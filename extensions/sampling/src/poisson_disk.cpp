@@ -71,7 +71,7 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
   auto accept = [&](const Sample& s) {
     const LocalField run = solver_.compute_local({Source::at(s.point)}, go, workspace);
     count_run(result.stats, run);
-    if (!field.clear_of_samples(run, mesh_)) return false;
+    if (!field.clear_of_samples(run)) return false;
     field.merge(run);
     field.add_sample(s.point.element, s.point.barycentric);
     result.samples.push_back(s);
@@ -116,9 +116,9 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
     bool any = false;
     for (std::size_t f = 0; f < mesh_.num_faces(); ++f) {
       const Triangle& t = mesh_.triangles[f];
-      for (int i = 0; i < 3; ++i)
-        if (distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]) > radius && triangle_area(mesh_, Index(f)) > 0)
-          large[f] = true;
+      double longest = 0;
+      for (int i = 0; i < 3; ++i) longest = std::max(longest, distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]));
+      large[f] = longest > radius && triangle_area(mesh_, Index(f)) > 0;
       any = any || large[f];
     }
     if (any) {
