@@ -6,7 +6,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace gsp::sampling::detail {
@@ -15,9 +14,18 @@ class FaceCells {
  public:
   // Cubes a little larger than `reach`, so that a point within `reach` of p lies in one of
   // the 27 cubes around p's whatever the rounding of the division.
-  explicit FaceCells(double reach) : inverse_(1.0 / (reach * (1 + 1e-9))) {}
+  explicit FaceCells(double reach) : inverse_(1.0 / (reach * (1 + 1e-9))), table_(1024) {}
 
-  void add(Index face, Vec3 p, std::int32_t item) { cells_[key(face, p, 0, 0, 0)].push_back(item); }
+  // Items are small non-negative ids (indices into the caller's arrays), each added once.
+  void add(Index face, Vec3 p, std::int32_t item) {
+    if (2 * (used_ + 1) > table_.size()) grow();
+    const Key k = key(face, p, 0, 0, 0);
+    Slot& s = table_[find(k)];
+    if (!s.used) s.used = true, s.key = k, ++used_;
+    if (std::size_t(item) >= next_.size()) next_.resize(std::size_t(item) + 1, -1);
+    next_[std::size_t(item)] = s.head;
+    s.head = item;
+  }
 
   // Calls visit(item) for every item of `face` within `reach` of p (and some farther ones).
   template <class Visit>
@@ -25,9 +33,8 @@ class FaceCells {
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = cells_.find(key(face, p, dx, dy, dz));
-          if (it == cells_.end()) continue;
-          for (std::int32_t item : it->second) visit(item);
+          const Slot& s = table_[find(key(face, p, dx, dy, dz))];
+          for (std::int32_t i = s.used ? s.head : -1; i >= 0; i = next_[std::size_t(i)]) visit(i);
         }
   }
 
@@ -37,15 +44,34 @@ class FaceCells {
     std::int64_t x, y, z;
     bool operator==(const Key& o) const { return face == o.face && x == o.x && y == o.y && z == o.z; }
   };
-  struct Hash {
-    std::size_t operator()(const Key& k) const {
-      std::uint64_t h = k.face * 0x9e3779b97f4a7c15ULL;
-      h ^= std::uint64_t(k.x) * 0xc2b2ae3d27d4eb4fULL + (h << 6) + (h >> 2);
-      h ^= std::uint64_t(k.y) * 0x165667b19e3779f9ULL + (h << 6) + (h >> 2);
-      h ^= std::uint64_t(k.z) * 0x27d4eb2f165667c5ULL + (h << 6) + (h >> 2);
-      return std::size_t(h);
-    }
+  // Open addressing, linear probing; a cube's items are a list through next_ (no allocation per
+  // cube: the first version kept a vector per cube in an unordered_map, and on a mesh whose
+  // every face holds dozens of sources the inserts took a third of the run).
+  struct Slot {
+    Key key{};
+    std::int32_t head = -1;
+    bool used = false;
   };
+  static std::size_t hash(const Key& k) {
+    std::uint64_t h = k.face * 0x9e3779b97f4a7c15ULL;
+    h ^= std::uint64_t(k.x) * 0xc2b2ae3d27d4eb4fULL + (h << 6) + (h >> 2);
+    h ^= std::uint64_t(k.y) * 0x165667b19e3779f9ULL + (h << 6) + (h >> 2);
+    h ^= std::uint64_t(k.z) * 0x27d4eb2f165667c5ULL + (h << 6) + (h >> 2);
+    return std::size_t(h ^ (h >> 29));
+  }
+  // The slot holding k, or the empty slot where it would go.
+  std::size_t find(const Key& k) const {
+    const std::size_t mask = table_.size() - 1;
+    std::size_t i = hash(k) & mask;
+    while (table_[i].used && !(table_[i].key == k)) i = (i + 1) & mask;
+    return i;
+  }
+  void grow() {
+    std::vector<Slot> old(table_.size() * 2);
+    old.swap(table_);
+    for (const Slot& s : old)
+      if (s.used) table_[find(s.key)] = s;
+  }
   // Clamped: a far virtual source (or a non-finite one) must not overflow the conversion.
   std::int64_t cell(double c) const {
     const double q = std::floor(c * inverse_);
@@ -55,7 +81,9 @@ class FaceCells {
     return {face, cell(p.x) + dx, cell(p.y) + dy, cell(p.z) + dz};
   }
   double inverse_;
-  std::unordered_map<Key, std::vector<std::int32_t>, Hash> cells_;
+  std::vector<Slot> table_;   // a power of two, at most half full
+  std::size_t used_ = 0;
+  std::vector<std::int32_t> next_;   // per item: the next item of its cube
 };
 
 }  // namespace gsp::sampling::detail
