@@ -14,3 +14,7 @@ if(TARGET gsp-cvt)
   gsp_test(cvt_app_test SOURCES cvt_app_test.cpp DEPS gsp::cvt gsp::io)
   add_dependencies(cvt_app_test gsp-cvt)   # the test runs the binary
 endif()
+if(TARGET gsp-cvt-compare)
+  gsp_test(cvt_compare_app_test SOURCES cvt_compare_app_test.cpp DEPS gsp::io)
+  add_dependencies(cvt_compare_app_test gsp-cvt-compare)   # the test runs the binary
+endif()
