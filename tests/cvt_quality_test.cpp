@@ -136,6 +136,23 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
   EXPECT_THROW(cvt::ClosestPointIndex{none}, InvalidInput);
 }
 
+// A point as near to several faces (a vertex of the grid, the middle of an edge) gets the
+// lowest-numbered of them, whatever order the BVH is walked in.
+TEST(CvtClosestPoint, TiesGoToTheLowestFace) {
+  const TriangleMesh m = test::square_grid(8);
+  const cvt::ClosestPointIndex index(m);
+  for (Index v = 0; v < m.num_vertices(); ++v) {
+    const Vec3 p = m.positions[v] + Vec3{0, 0, 0.25};
+    Index lowest = kInvalidIndex;
+    for (Index f = 0; f < m.num_faces() && lowest == kInvalidIndex; ++f)
+      for (Index k : m.triangles[f])
+        if (k == v) lowest = f;
+    const ClosestPoint c = index.closest(p);
+    EXPECT_EQ(c.point.element, lowest) << "vertex " << v;
+    EXPECT_DOUBLE_EQ(c.distance, 0.25);
+  }
+}
+
 TEST(CvtHausdorff, ShiftedSquares) {
   const TriangleMesh a = test::square_grid(6);
   TriangleMesh b = test::square_grid(3);

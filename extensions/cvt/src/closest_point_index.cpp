@@ -43,7 +43,9 @@ bool query_triangle(RTCPointQueryFunctionArguments* args) {
   const std::array<double, 3> w = closest_point_on_triangle(q->p, a, b, c);
   const Vec3 x = w[0] * a + w[1] * b + w[2] * c;
   const double d = distance(x, q->p);
-  if (d >= q->best.distance) return false;
+  // Ties (a point on an edge is as near to both faces) go to the lower face index, so the
+  // answer does not depend on the order in which the BVH, built in parallel, is walked.
+  if (d > q->best.distance || (d == q->best.distance && f >= q->best.point.element)) return false;
   q->best.point = SurfacePoint::in_face(f, w);
   q->best.position = x;
   q->best.distance = d;
