@@ -24,7 +24,7 @@ struct Cvt {
 
 cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, const py::object& edge_length,
                             int iterations, std::uint64_t seed, const std::string& init, double feature_angle,
-                            const py::object& progress, const char* count_name) {
+                            unsigned threads, const py::object& progress, const char* count_name) {
   if (mesh.num_faces() == 0) throw py::value_error("F is empty: a CVT needs faces");
   if (sites.is_none() == edge_length.is_none())
     throw py::value_error(std::string("give exactly one of ") + count_name + "= and edge_length=");
@@ -40,6 +40,7 @@ cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, c
   if (iterations < 0) throw py::value_error("iterations must be >= 0");
   o.max_iterations = iterations;
   o.seed = seed;
+  o.threads = threads;
   if (!(feature_angle >= 0 && feature_angle <= 180)) throw py::value_error("feature_angle must be in [0, 180] degrees");
   o.feature_angle = feature_angle;
   if (init == "poisson") o.initial = cvt::InitialSites::poisson;
@@ -54,10 +55,11 @@ cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, c
 }
 
 Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, const py::object& edge_length,
-            int iterations, std::uint64_t seed, const std::string& init, double feature_angle,
+            int iterations, std::uint64_t seed, const std::string& init, double feature_angle, unsigned threads,
             const py::object& progress) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
-  const cvt::CvtOptions o = cvt_options(mesh, sites, edge_length, iterations, seed, init, feature_angle, progress, "sites");
+  const cvt::CvtOptions o =
+      cvt_options(mesh, sites, edge_length, iterations, seed, init, feature_angle, threads, progress, "sites");
   cvt::CvtResult r;
   {
     py::gil_scoped_release nogil;
@@ -72,11 +74,11 @@ Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, c
 }
 
 py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& vertices, const py::object& edge_length,
-                 int iterations, std::uint64_t seed, bool flip, bool smooth, double feature_angle,
+                 int iterations, std::uint64_t seed, bool flip, bool smooth, double feature_angle, unsigned threads,
                  const py::object& progress) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   const cvt::CvtOptions o =
-      cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, progress, "vertices");
+      cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, threads, progress, "vertices");
   cvt::SurfaceRemeshResult r;
   {
     py::gil_scoped_release nogil;
@@ -118,18 +120,18 @@ void bind_cvt(py::module_& m) {
   m.def("cvt", &run_cvt, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sites") = py::none(),
         py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u,
         py::arg("init") = "poisson", py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
-        py::arg("progress") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(),
         R"(Geodesic centroidal Voronoi tessellation by Lloyd iterations with GSP: a gsp.Cvt.
 
 Exactly one of sites (count) and edge_length (model units). Regions that are not disks are
 repaired by adding sites, so len(result.sites) may exceed `sites` slightly. feature_angle
 (degrees, 0 = off): crease curves sharper than this get fixed sites at even steps along them
-(counted in `sites`). progress(fraction)
-is called per iteration; Ctrl-C stops it.)");
+(counted in `sites`). threads: of the propagations (0 = automatic; 1 = the same result on
+every run, see gsp-cvt --threads). progress(fraction) is called per iteration; Ctrl-C stops it.)");
   m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("vertices") = py::none(),
         py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u, py::arg("flip") = true,
         py::arg("smooth") = true, py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
-        py::arg("progress") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(),
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
@@ -139,7 +141,9 @@ a gsp.RemeshWarning naming it and the reason; ValueError when no component could
 remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. feature_angle
 (degrees, 0 = off): edges whose faces' normals differ by more than this form crease curves,
 kept in the remesh as chains of edges with their corners as vertices (gsp-cvt --feature-angle).
-progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
+threads: of the propagations (0 = automatic, where ties make large meshes vary slightly from
+run to run; 1 = the same output every run). progress(fraction) per Lloyd iteration; Ctrl-C
+stops it.)");
 }
 
 }  // namespace gsp::python

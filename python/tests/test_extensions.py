@@ -91,6 +91,19 @@ def test_cvt_labels(fertility):
     assert c.energy_curve[-1] <= c.energy_curve[0]
 
 
+def test_cvt_on_one_thread_is_the_automatic_result_below_the_parallel_size(fertility):
+    # fertility at 200 sites has a working mesh far below 200k faces: "automatic" is one thread,
+    # so threads=1 gives the same sites, and twice the same.
+    V, F = fertility
+    a = gsp.cvt(V, F, sites=200, iterations=5, threads=1)
+    b = gsp.cvt(V, F, sites=200, iterations=5, threads=1)
+    c = gsp.cvt(V, F, sites=200, iterations=5)
+    assert np.array_equal(a.sites, b.sites) and np.array_equal(a.sites, c.sites)
+    assert np.array_equal(a.labels, c.labels)
+    with pytest.raises(TypeError):
+        gsp.cvt(V, F, sites=200, threads=-1)
+
+
 def _book():
     # Three triangles on one edge (0-1): a non-manifold "book" no remesh can keep.
     V = np.array([[0, 0, 0], [0, 0, 1], [1, 0, 0.5], [-1, 0, 0.5], [0, 1, 0.5]], dtype=float)

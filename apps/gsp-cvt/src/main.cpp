@@ -31,6 +31,7 @@ struct Options {
   double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
+  unsigned threads = 0;
   bool no_fix = false, no_flip = false, no_smooth = false, ascii = false;
   cli::LoadOptions load;
 };
@@ -52,6 +53,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--init", o.init, "initial sites: poisson (default), farthest or random (area-uniform)")
       ->check(CLI::IsMember({"poisson", "farthest", "random"}));
   app.add_option("--seed", o.seed, "random seed of the initial sites");
+  app.add_option("--threads", o.threads,
+                 "threads of the geodesic propagations (default 0: automatic, two or more on working meshes of 200k+ "
+                 "faces, where ties make the remesh vary slightly from run to run); 1: the same output every run")
+      ->check(CLI::Range(0, 1024));
   app.add_option("--regions", o.regions,
                  "also write the input mesh with an int vertex `label` (its region) and a colour per region "
                  "(.ply .obj .off .glb .gltf)");
@@ -101,6 +106,7 @@ void run(cli::Context& ctx, const Options& o) {
                : o.init == "random"  ? cvt::InitialSites::random
                                      : cvt::InitialSites::poisson;
   co.seed = o.seed;
+  co.threads = o.threads;
   co.fix_regions = !o.no_fix;
   co.feature_angle = o.feature_angle;
   ctx.settings()["method"] = "lloyd-gsp";
@@ -111,6 +117,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["over_relaxation"] = o.over_relaxation;
   ctx.settings()["init"] = o.init;
   ctx.settings()["seed"] = o.seed;
+  ctx.settings()["threads"] = o.threads;
   ctx.settings()["fix_regions"] = co.fix_regions;
   ctx.settings()["feature_angle"] = o.feature_angle;
   ctx.settings()["flip_edges"] = !o.no_flip;

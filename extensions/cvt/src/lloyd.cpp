@@ -54,6 +54,7 @@ class Lloyd {
     for (const SurfaceSite& s : sites) sources.push_back(Source::at(s.point));
     GeodesicOptions go;
     go.want_face_sources = true;
+    go.threads = o_.threads;
     Evaluation e;
     e.result = solver_.compute(sources, go);
     stats_.propagations++;
@@ -484,7 +485,9 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
 
   t0 = Clock::now();
   const WorkingGeometry g(out.working.mesh);
-  const GeodesicSolver solver(out.working.mesh);
+  SolverOptions solver_options;
+  solver_options.threads = options.threads;
+  const GeodesicSolver solver(out.working.mesh, solver_options);
   out.area = g.total_area;
   out.diagonal = g.diagonal;
   stats.timings.prepare = seconds_since(t0);

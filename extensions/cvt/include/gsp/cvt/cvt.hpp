@@ -83,6 +83,13 @@ struct CvtOptions {
   // curve), and the faces around it belong to those sites, so the remesh has each curve as a
   // chain of edges and every corner as a vertex. The fixed sites count towards `sites`.
   double feature_angle = 0;
+  // Threads of the geodesic solver (its preparation and each propagation): 0 = automatic (two
+  // or more on working meshes of at least kParallelMinFaces faces), 1 = one. On several
+  // threads a propagation's ties fall in the order the threads reach them (GSP's order
+  // effects), a face near a border between two regions can change sides, and the remesh then
+  // differs from run to run in a few places; on one thread it is the same every time, at
+  // 10-20% more time for working meshes that large (docs/cvt.md).
+  unsigned threads = 0;
   IterationFn on_iteration;
 };
 
