@@ -115,4 +115,38 @@ TEST(CvtSmoothing, FlatSquareKeepsItsBoundary) {
   check_smoothing(test::square_grid(30), 200);
 }
 
+// RemeshOptions::accept_dual sees the dual before the flips and the post-pass; refused, the
+// dual comes back as it is (the same triangles as with both off), accepted, the post-pass runs.
+TEST(CvtSmoothing, RefusedDualSkipsTheFlipsAndThePostPass) {
+  const TriangleMesh m = test::square_grid(30);
+  cvt::CvtOptions o;
+  o.sites = 200;
+  o.max_iterations = 5;
+  const cvt::CvtResult cvt = cvt::compute_cvt(m, o);
+  cvt::RemeshOptions raw;
+  raw.flip_edges = false;
+  raw.smooth = false;
+  const cvt::RemeshResult plain = cvt::restricted_delaunay(cvt, raw);
+
+  std::size_t seen_faces = 0, calls = 0;
+  cvt::RemeshOptions refuse;
+  refuse.accept_dual = [&](const TriangleMesh& dual) {
+    ++calls;
+    seen_faces = dual.num_faces();
+    return false;
+  };
+  const cvt::RemeshResult refused = cvt::restricted_delaunay(cvt, refuse);
+  EXPECT_EQ(calls, 1u);
+  EXPECT_EQ(seen_faces, plain.mesh.num_faces());
+  EXPECT_EQ(refused.mesh.triangles, plain.mesh.triangles);
+  EXPECT_EQ(refused.mesh.positions.size(), plain.mesh.positions.size());
+  EXPECT_EQ(refused.stats.flips + refused.stats.smoothing_moves, 0u);
+
+  cvt::RemeshOptions accept;
+  accept.accept_dual = [&](const TriangleMesh&) { return true; };
+  const cvt::RemeshResult full = cvt::restricted_delaunay(cvt, accept), usual = cvt::restricted_delaunay(cvt);
+  EXPECT_EQ(full.mesh.triangles, usual.mesh.triangles);
+  EXPECT_GT(full.stats.flips + full.stats.smoothing_moves, 0u);   // five iterations leave work for the post-pass
+}
+
 }  // namespace

@@ -56,6 +56,7 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     }
   r.mesh.triangles = std::move(d.triangles);
   r.stats.unused_sites = cvt.sites.size() - r.vertex_site.size();
+  if (options.accept_dual && !options.accept_dual(r.mesh)) return r;
   // The feature curves' samples and the edges between them stay as the dual made them.
   std::vector<bool> locked(r.vertex_site.size(), false);
   for (std::size_t v = 0; v < locked.size(); ++v) locked[v] = cvt.sites[r.vertex_site[v]].fixed;

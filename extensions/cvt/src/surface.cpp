@@ -197,12 +197,22 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
         c.sites = n;
         c.edge_length = 0;
         std::size_t defects = 0;   // of the last attempt (same_topology_per_component)
+        // Other initial sites only where a few places went wrong (SurfaceRemeshOptions::retries).
+        const std::size_t local_defects =
+            std::max<std::size_t>(1, std::size_t(options.retry_defect_fraction * double(n)));
+        RemeshOptions remesh_options = options.remesh;
+        if (!remesh_options.accept_dual)
+          remesh_options.accept_dual = [&](const TriangleMesh& dual) {
+            std::size_t wrong = 0;
+            same_topology_per_component(oriented, dual, nullptr, &wrong);
+            return wrong <= local_defects;
+          };
         auto attempt = [&](CvtResult& cvt, RemeshResult& r, std::string& why) {
           auto t0 = Clock::now();
           cvt = compute_cvt(oriented, c);
           rep.cvt_seconds += seconds_since(t0);
           t0 = Clock::now();
-          r = restricted_delaunay(cvt, options.remesh);
+          r = restricted_delaunay(cvt, remesh_options);
           rep.remesh_seconds += seconds_since(t0);
           return same_topology_per_component(oriented, r.mesh, &why, &defects);
         };
@@ -218,9 +228,6 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
           rep.features_dropped = true;
           ok = attempt(cvt, r, why);
         }
-        // Other initial sites only where a few places went wrong (SurfaceRemeshOptions::retries).
-        const std::size_t local_defects =
-            std::max<std::size_t>(1, std::size_t(options.retry_defect_fraction * double(n)));
         for (std::size_t k = 1; !ok && defects <= local_defects && k <= options.retries; ++k) {
           c.seed = co.seed + k;
           ++rep.retries;

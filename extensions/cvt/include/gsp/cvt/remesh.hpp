@@ -12,6 +12,8 @@
 //   r.mesh   // sites as vertices (sites no triangle uses are dropped)
 #include <gsp/cvt/cvt.hpp>
 
+#include <functional>
+
 namespace gsp::cvt {
 
 struct RemeshOptions {
@@ -58,6 +60,12 @@ struct RemeshOptions {
   // without ruining their angles. 0: off.
   double refine_distance = 4e-3;
   double refine_max_fraction = 0.02;
+  // Called with the dual as the regions give it, before the flips and the post-pass; when it
+  // returns false the dual is returned as it is, without them. remesh_surface uses it to skip
+  // the post-pass of a dual wrong in more places than its retries would try to mend: on the
+  // corpus no such dual came out right after the post-pass (docs/cvt.md, "A dual beyond
+  // repair"), and the post-pass was most of the time lost on it. Empty: always go on.
+  std::function<bool(const TriangleMesh&)> accept_dual;
 };
 
 struct RemeshStats {
