@@ -24,7 +24,8 @@ import time
 
 MESH_EXTENSIONS = (".obj", ".off", ".ply", ".stl", ".gltf", ".glb")
 METHODS = (("gsp", "gsp-cvt"), ("cgal", "CGAL"))
-OUTPUT_FIELDS = ("status", "vertices", "min_angle", "percent_below_30", "hausdorff_percent_of_diagonal",
+OUTPUT_FIELDS = ("status", "vertices", "min_angle", "percent_below_30", "remeshed_min_angle", "remeshed_faces",
+                 "hausdorff_percent_of_diagonal",
                  "feature_distance_percent_of_diagonal",
                  "manifold", "euler_characteristic", "boundary_loops", "components", "duplicate_vertices",
                  "inconsistent_edges", "topology_kept", "topology_difference", "seconds", "note")
@@ -174,9 +175,11 @@ def markdown(rows):
             manifold = sum(number(r.get(prefix + "_manifold")) == 1 for r in ok)
             dups = sum(number(r.get(prefix + "_duplicate_vertices")) > 0 for r in ok)
             floor = sum(number(r.get(prefix + "_min_angle")) >= 20 for r in ok)
+            own = sum(number(r.get(prefix + "_remeshed_min_angle")) >= 20 for r in ok)
             failed = sum(r.get(prefix + "_status") != "ok" for r in rs)
             lines.append(f"- {name}: ran {len(ok)}, failed {failed}; manifold {manifold}; topology per component "
-                         f"kept {kept}; with duplicate vertices {dups}; min angle >= 20 deg {floor}")
+                         f"kept {kept}; with duplicate vertices {dups}; min angle >= 20 deg {floor} "
+                         f"(on the remeshed components alone: {own})")
         outcomes = {}
         for r in rs:
             for item in (r.get("gsp_component_outcomes") or "").split():
@@ -199,7 +202,10 @@ def counts(rows, prefix):
     kept = sum(number(r.get(prefix + "_topology_kept")) == 1 for r in ok)
     manifold = sum(number(r.get(prefix + "_manifold")) == 1 for r in ok)
     floor = sum(number(r.get(prefix + "_min_angle")) >= 20 for r in ok)
-    return f"{len(ok)} ran; {manifold} manifold; {kept} topology kept; {floor} with min angle >= 20"
+    own = sum(number(r.get(prefix + "_remeshed_min_angle")) >= 20 for r in ok)
+    return (f"{len(ok)} ran; {manifold} manifold; {kept} topology kept; {floor} with min angle >= 20"
+            + (f" ({own} on the remeshed components alone)" if any(r.get(prefix + "_remeshed_min_angle") not in ("", None)
+                                                               for r in ok) else ""))
 
 
 def remeshed_counts(rows):

@@ -27,6 +27,16 @@ TEST(CvtCompareApp, FoldedFacePairIsARowNotACrash) {
       << r.out;
   EXPECT_NE(r.out.find("| gsp-cvt (Lloyd + restricted Delaunay) | "), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("| gsp-cvt (Lloyd + restricted Delaunay) | failed"), std::string::npos) << r.out;
+
+  // The pair's share of the budget is too small (kept as it is, after the tetrahedron's
+  // remesh): its two input triangles are counted apart from the remesh's own.
+  const std::size_t json_start = r.out.find('{');
+  ASSERT_NE(json_start, std::string::npos) << r.out;
+  const JsonValue stats = parse_json(r.out.substr(json_start));
+  const JsonValue& gsp = stats["rows"].items.at(0)["measures"];
+  EXPECT_EQ(gsp["remeshed_faces"].num + 2, gsp["faces"].num);
+  EXPECT_GE(gsp["remeshed_min_angle"].num, gsp["min_angle"].num);
+  EXPECT_GT(gsp["remeshed_min_angle"].num, 20.0);
 }
 
 }  // namespace
