@@ -26,9 +26,10 @@ Components find_components(const WorkingGeometry& g, const std::vector<Index>& l
   for (Index h = 0; h < g.conn.num_halfedges(); ++h) {
     const Index f = face_of(h);
     if (label[f] == kInvalidIndex || g.conn.halfedge_edge[h] == kInvalidIndex) continue;
+    // Each pair of faces on the edge is joined once, from its lower halfedge.
     for (Index o = g.conn.radial_next[h]; o != h; o = g.conn.radial_next[o]) {
       const Index f2 = face_of(o);
-      if (label[f2] != label[f]) continue;
+      if (o < h || label[f2] != label[f]) continue;
       const Index a = find(parent, f), b = find(parent, f2);
       if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
