@@ -270,6 +270,39 @@ TEST(GeodesicApp, PointCloudDomain) {
 namespace gsp::test {
 namespace {
 
+// A cloud's --separate fields equal its single-source runs, and its --matrix holds them at the
+// source points (both were a usage error before: meshes only).
+TEST(GeodesicApp, PointCloudSeparateAndMatrix) {
+  ScratchDir dir("geodesic");
+  const std::string base = quote(bin(kApp)) + " " + quote(sample()) + " --domain points";
+  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --separate --threads 2 -o " + quote((dir / "f.txt").string()), dir).exit_code, 0);
+  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --matrix -o " + quote((dir / "m.csv").string()), dir).exit_code, 0);
+  const Index vs[3] = {5, 77, 300};
+  const std::vector<std::string> rows = lines(slurp(dir / "m.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_EQ(run(base + " --source-vertex " + std::to_string(vs[i]) + " -o " + quote((dir / "one.txt").string()), dir).exit_code, 0);
+    const auto one = io::read_values_txt((dir / "one.txt").string());
+    const auto sep = io::read_values_txt((dir / ("f-" + std::to_string(i) + ".txt")).string());
+    ASSERT_EQ(sep, one) << "field " << i;
+    EXPECT_EQ(one[vs[i]], 0.0);
+    std::stringstream row(rows[i]);
+    for (int j = 0; j < 3; ++j) {
+      std::string cell;
+      std::getline(row, cell, ',');
+      EXPECT_NEAR(std::stod(cell), one[vs[j]], 1e-6 * (1 + one[vs[j]]));
+      if (j != i) EXPECT_GT(std::stod(cell), 0.0);
+    }
+  }
+  EXPECT_EQ(run(base + " --source-point 0,0,0 --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace gsp::test
+
+namespace gsp::test {
+namespace {
+
 // --method windows: exact on a plane from two sources (distance to the nearer), never below the
 // straight line on fertility, and the options it does not take refused with a usage error.
 TEST(GeodesicApp, MethodWindows) {

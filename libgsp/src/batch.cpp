@@ -24,11 +24,7 @@ bool& inside_parallel_region() {
 
 }  // namespace detail
 
-namespace {
-
-// Runs job(i) for i in [0, n) on `threads` threads (the calling thread is one of them).
-template <class Job>
-void parallel_for(std::size_t n, unsigned threads, const Job& job) {
+void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& job) {
   std::atomic<std::size_t> next{0};
   std::exception_ptr failure;
   std::mutex failure_mutex;
@@ -57,8 +53,6 @@ void parallel_for(std::size_t n, unsigned threads, const Job& job) {
   for (std::thread& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
 }
-
-}  // namespace
 
 std::vector<GeodesicResult> compute_many(const GeodesicSolver& solver,
                                          const std::vector<std::vector<Source>>& queries,

@@ -1,7 +1,9 @@
 #include "points.hpp"
 
+#include "batch_output.hpp"
 #include "output.hpp"
 
+#include <gsp/batch.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 
@@ -9,10 +11,50 @@
 
 namespace gsp::geodesic_app {
 
+namespace {
+
+// --separate: a field per source, OUT-0.ext, OUT-1.ext, ...; --matrix: the distances between
+// the source points (row i: from source i). The queries run in parallel (gsp::parallel_for),
+// as the mesh modes' do.
+void run_points_many(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in,
+                     const pointcloud::PointCloudGeodesics& cloud, const std::vector<pointcloud::PointSource>& sources,
+                     const pointcloud::PointGeodesicOptions& go) {
+  const std::size_t n = sources.size();
+  const unsigned threads = resolve_threads(o.threads, n);
+  ctx.settings()["domain"] = "points";
+  ctx.settings()["method"] = o.method;
+  ctx.settings()["sources"] = n;
+  ctx.settings()["threads"] = threads;
+  if (o.matrix) {
+    std::vector<Index> points;
+    for (const pointcloud::PointSource& s : sources) points.push_back(s.point);
+    std::vector<double> matrix(n * n);
+    ctx.timer().time("compute", [&] {
+      parallel_for(n, threads, [&](std::size_t i) {
+        const pointcloud::PointCloudResult r = cloud.compute({sources[i]}, go);
+        for (std::size_t j = 0; j < n; ++j) matrix[i * n + j] = r.distance[points[j]];
+      });
+    });
+    ctx.stats()["result"]["matrix_size"] = n;
+    ctx.timer().time("write", [&] { write_matrix(o.output, matrix, n); });
+    return;
+  }
+  std::vector<pointcloud::PointCloudResult> fields(n);
+  ctx.timer().time("compute", [&] {
+    parallel_for(n, threads, [&](std::size_t i) { fields[i] = cloud.compute({sources[i]}, go); });
+  });
+  ctx.stats()["result"]["fields"] = n;
+  ctx.timer().time("write", [&] {
+    for (std::size_t i = 0; i < n; ++i)
+      write_field(numbered_path(o.output, i), in, fields[i].distance, fields[i].source, false, o.ascii);
+  });
+}
+
+}  // namespace
+
 void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, double max_distance,
                 const render::RenderOptions& preview) {
   if (!o.source_faces.empty()) throw cli::UsageError("--source-face needs faces: not with --domain points");
-  if (o.separate || o.matrix) throw cli::UsageError("--separate and --matrix work on meshes only");
   pointcloud::PointCloudOptions po;
   po.neighbours.k = o.neighbours;
   // The other methods run on the graph alone; the preview is drawn on the triangles.
@@ -41,6 +83,10 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   go.max_distance = max_distance;
   go.f = o.f;
   go.strategy = parse_strategy(o.strategy);
+  if (o.separate || o.matrix) {
+    run_points_many(ctx, o, in, cloud, sources, go);
+    return;
+  }
   const pointcloud::PointCloudResult r = ctx.timer().time("compute", [&] { return cloud.compute(sources, go); });
 
   const pointcloud::PointCloudStats& s = cloud.stats();

@@ -5,12 +5,20 @@
 // queries are independent). Standard library only, like the rest of the core.
 #include <gsp/geodesics.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace gsp {
 
 // threads = 0: std::thread::hardware_concurrency(); never more threads than queries.
 unsigned resolve_threads(unsigned threads, std::size_t jobs);
+
+// Runs job(i) for every i in [0, n) on `threads` threads (the calling thread is one of them),
+// taking indices from a shared counter. Inside, a query's automatic thread count means one
+// (the cores are taken). The first exception thrown by a job stops the handing out of work
+// and is rethrown once all threads have stopped. The pool of compute_many and
+// distance_matrix below, and of the extensions' many-query modes (point clouds).
+void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& job);
 
 // One GeodesicResult per query, in the order given. The first exception thrown by any query
 // is rethrown after all threads have stopped.
