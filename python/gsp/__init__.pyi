@@ -92,6 +92,8 @@ class PointCloudSolver:
     def distance(self, sources: Union[None, int, Sequence[int], ArrayLike] = ..., *, positions: Optional[ArrayLike] = ...,
                  method: str = ..., max_distance: float = ...,
                  labels: bool = ...) -> Union[FloatArray, Tuple[FloatArray, IntArray]]: ...
+    def distance_matrix(self, points: Union[Sequence[int], ArrayLike], *, targets: Optional[Union[Sequence[int], ArrayLike]] = ...,
+                        method: str = ..., threads: int = ...) -> FloatArray: ...
 
 class Samples:
     points: FloatArray

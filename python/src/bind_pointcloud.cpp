@@ -2,6 +2,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 
+#include <gsp/batch.hpp>
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 
 #include <limits>
@@ -46,6 +47,27 @@ py::object distance(const PointCloudGeodesics& s, const py::handle& sources, con
   return py::make_tuple(std::move(d), labels_to_array(r.source));
 }
 
+// Row i: the field from points[i] at the targets (the same points by default). Rows run in
+// parallel on the core's pool, the GIL released.
+py::array_t<double> distance_matrix(const PointCloudGeodesics& s, const py::handle& points, const py::handle& targets,
+                                    const std::string& method, unsigned threads) {
+  const std::vector<Index> rows = indices_from(points, s.num_points(), "points");
+  const std::vector<Index> cols = targets.is_none() ? rows : indices_from(targets, s.num_points(), "targets");
+  if (rows.empty()) throw py::value_error("points is empty");
+  pointcloud::PointGeodesicOptions o;
+  o.method = method_from(method);
+  py::array_t<double> out({py::ssize_t(rows.size()), py::ssize_t(cols.size())});
+  double* data = out.mutable_data();
+  {
+    py::gil_scoped_release nogil;
+    parallel_for(rows.size(), resolve_threads(threads, rows.size()), [&](std::size_t i) {
+      const pointcloud::PointCloudResult r = s.compute({pointcloud::PointSource::at_point(rows[i])}, o);
+      for (std::size_t j = 0; j < cols.size(); ++j) data[i * cols.size() + j] = r.distance[cols[j]];
+    });
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_pointcloud(py::module_& m) {
@@ -76,7 +98,14 @@ PointCloudSolver(P, *, k=10, normals=None): P (n, 3); k nearest neighbours per p
 
 sources: point indices; positions: (k, 3) points in space (their nearest points are seeded at
 their straight distance). method: 'gsp' (default), 'graph_gsp' or 'dijkstra' (along the
-graph's links). labels=True returns (distance, label) with the nearest source's index.)");
+graph's links). labels=True returns (distance, label) with the nearest source's index.)")
+      .def("distance_matrix", &distance_matrix, py::arg("points"), py::kw_only(), py::arg("targets") = py::none(),
+           py::arg("method") = "gsp", py::arg("threads") = 0u,
+           R"(Distances between points of the cloud: a (k, t) float64 array, row i the field from points[i].
+
+points: point indices; targets: None (the same points: k x k) or other point indices. Rows run
+in parallel on `threads` (0: all cores), the GIL released. Not exactly symmetric (each row is
+its own propagation); (D + D.T) / 2 is.)");
 }
 
 }  // namespace gsp::python

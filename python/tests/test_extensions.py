@@ -46,6 +46,22 @@ def test_point_cloud_file():
     assert np.all(d[reached] >= np.linalg.norm(P[reached] - P[0], axis=1) * (1 - 1e-5))
 
 
+def test_point_cloud_distance_matrix_rows_are_the_fields(fertility):
+    V, _ = fertility
+    solver = gsp.PointCloudSolver(V, k=10)
+    points = [5, 77, 300]
+    D = solver.distance_matrix(points, threads=2)
+    assert D.shape == (3, 3) and D.dtype == np.float64
+    for i, p in enumerate(points):
+        assert np.array_equal(D[i], solver.distance(p)[points])
+    assert np.all(np.diag(D) == 0) and np.all(D[~np.eye(3, dtype=bool)] > 0)
+    assert np.allclose(D, D.T, rtol=0.02)   # each row its own propagation
+    R = solver.distance_matrix([5, 77], targets=[1, 2, 3], method="dijkstra")
+    assert R.shape == (2, 3) and np.array_equal(R[1], solver.distance(77, method="dijkstra")[[1, 2, 3]])
+    with pytest.raises(ValueError):
+        solver.distance_matrix([len(V)])
+
+
 @pytest.mark.parametrize("mode", ["poisson", "farthest"])
 def test_sample_exact_count(fertility, mode):
     V, F = fertility
