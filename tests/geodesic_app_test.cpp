@@ -173,27 +173,36 @@ TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
             2);
 }
 
-TEST(GeodesicApp, SeparateFieldsAndMatrixMatchSingleRuns) {
-  ScratchDir dir("geodesic");
-  const std::string base = quote(bin(kApp)) + " " + quote(sample());
+// `base` (the app and its input) with --separate and --matrix from vertices 5, 77 and 300: each
+// separate field equals the single run of its source (`single` added to those runs), the
+// matrix holds those fields at the three sources.
+void check_separate_and_matrix(const std::string& base, const std::string& single, const ScratchDir& dir) {
   ASSERT_EQ(run(base + " --source-vertex 5,77,300 --separate --threads 2 -o " + quote((dir / "f.txt").string()), dir).exit_code, 0);
   ASSERT_EQ(run(base + " --source-vertex 5,77,300 --matrix -o " + quote((dir / "m.csv").string()), dir).exit_code, 0);
   const Index vs[3] = {5, 77, 300};
   const std::vector<std::string> rows = lines(slurp(dir / "m.csv"));
   ASSERT_EQ(rows.size(), 3u);
   for (int i = 0; i < 3; ++i) {
-    // --layout on: the clustering the batch runs use (auto may pick the Z-order for one field).
-    ASSERT_EQ(run(base + " --source-vertex " + std::to_string(vs[i]) + " --layout on -o " + quote((dir / "one.txt").string()), dir).exit_code, 0);
+    ASSERT_EQ(run(base + " --source-vertex " + std::to_string(vs[i]) + single + " -o " + quote((dir / "one.txt").string()), dir).exit_code, 0);
     const auto one = io::read_values_txt((dir / "one.txt").string());
     const auto sep = io::read_values_txt((dir / ("f-" + std::to_string(i) + ".txt")).string());
     ASSERT_EQ(sep, one) << "field " << i;
+    EXPECT_EQ(one[vs[i]], 0.0);
     std::stringstream row(rows[i]);
     for (int j = 0; j < 3; ++j) {
       std::string cell;
       std::getline(row, cell, ',');
       EXPECT_NEAR(std::stod(cell), one[vs[j]], 1e-6 * (1 + one[vs[j]]));
+      if (j != i) EXPECT_GT(std::stod(cell), 0.0);
     }
   }
+}
+
+TEST(GeodesicApp, SeparateFieldsAndMatrixMatchSingleRuns) {
+  ScratchDir dir("geodesic");
+  const std::string base = quote(bin(kApp)) + " " + quote(sample());
+  // --layout on: the clustering the batch runs use (auto may pick the Z-order for one field).
+  check_separate_and_matrix(base, " --layout on", dir);
   // The modes exclude each other, need vertex sources and a text output.
   EXPECT_EQ(run(base + " --source-vertex 1,2 --separate --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
   EXPECT_EQ(run(base + " --source-point 0,0,0 --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
@@ -275,25 +284,7 @@ namespace {
 TEST(GeodesicApp, PointCloudSeparateAndMatrix) {
   ScratchDir dir("geodesic");
   const std::string base = quote(bin(kApp)) + " " + quote(sample()) + " --domain points";
-  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --separate --threads 2 -o " + quote((dir / "f.txt").string()), dir).exit_code, 0);
-  ASSERT_EQ(run(base + " --source-vertex 5,77,300 --matrix -o " + quote((dir / "m.csv").string()), dir).exit_code, 0);
-  const Index vs[3] = {5, 77, 300};
-  const std::vector<std::string> rows = lines(slurp(dir / "m.csv"));
-  ASSERT_EQ(rows.size(), 3u);
-  for (int i = 0; i < 3; ++i) {
-    ASSERT_EQ(run(base + " --source-vertex " + std::to_string(vs[i]) + " -o " + quote((dir / "one.txt").string()), dir).exit_code, 0);
-    const auto one = io::read_values_txt((dir / "one.txt").string());
-    const auto sep = io::read_values_txt((dir / ("f-" + std::to_string(i) + ".txt")).string());
-    ASSERT_EQ(sep, one) << "field " << i;
-    EXPECT_EQ(one[vs[i]], 0.0);
-    std::stringstream row(rows[i]);
-    for (int j = 0; j < 3; ++j) {
-      std::string cell;
-      std::getline(row, cell, ',');
-      EXPECT_NEAR(std::stod(cell), one[vs[j]], 1e-6 * (1 + one[vs[j]]));
-      if (j != i) EXPECT_GT(std::stod(cell), 0.0);
-    }
-  }
+  check_separate_and_matrix(base, "", dir);
   EXPECT_EQ(run(base + " --source-point 0,0,0 --matrix -o " + quote((dir / "x.txt").string()), dir).exit_code, 2);
 }
 
