@@ -21,9 +21,6 @@ void run_points_many(cli::Context& ctx, const Options& o, const cli::LoadedMesh&
                      const pointcloud::PointGeodesicOptions& go) {
   const std::size_t n = sources.size();
   const unsigned threads = resolve_threads(o.threads, n);
-  ctx.settings()["domain"] = "points";
-  ctx.settings()["method"] = o.method;
-  ctx.settings()["sources"] = n;
   ctx.settings()["threads"] = threads;
   if (o.matrix) {
     std::vector<Index> points;
@@ -83,6 +80,11 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   go.max_distance = max_distance;
   go.f = o.f;
   go.strategy = parse_strategy(o.strategy);
+  ctx.settings()["domain"] = "points";
+  ctx.settings()["method"] = o.method;
+  ctx.settings()["strategy"] = o.strategy;
+  ctx.settings()["neighbours"] = o.neighbours;
+  ctx.settings()["sources"] = sources.size();
   if (o.separate || o.matrix) {
     run_points_many(ctx, o, in, cloud, sources, go);
     return;
@@ -90,11 +92,6 @@ void run_points(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in, 
   const pointcloud::PointCloudResult r = ctx.timer().time("compute", [&] { return cloud.compute(sources, go); });
 
   const pointcloud::PointCloudStats& s = cloud.stats();
-  ctx.settings()["domain"] = "points";
-  ctx.settings()["method"] = o.method;
-  ctx.settings()["strategy"] = o.strategy;
-  ctx.settings()["neighbours"] = o.neighbours;
-  ctx.settings()["sources"] = sources.size();
   cli::Json& cs = ctx.stats()["cloud"];
   cs["points"] = s.points;
   cs["unique_points"] = s.unique_points;
