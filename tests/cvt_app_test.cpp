@@ -189,6 +189,27 @@ TEST(CvtApp, OneThreadRemeshesTheSameEveryRun) {
   }
 }
 
+// --faces-per-site sets the working mesh: the fewest 1-to-4 splits that reach the count (the
+// long-edge bisection only adds faces), so at least that many faces per site and, for more,
+// a finer working mesh than the default's.
+TEST(CvtApp, FacesPerSiteSetsTheWorkingMesh) {
+  ScratchDir dir("cvt");
+  double faces[2] = {0, 0};
+  const int per_site[2] = {12, 48};
+  for (int i = 0; i < 2; ++i) {
+    const std::string option = i == 0 ? "" : " --faces-per-site 48";
+    const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 400 --iterations 2 --no-smooth --stats -" + option +
+                                " -o " + quote((dir / "r.ply").string()),
+                            dir, kRemeshLimit);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const JsonValue stats = parse_json(r.out);
+    EXPECT_EQ(stats["settings"]["faces_per_site"].num, per_site[i]);
+    faces[i] = stats["operations"]["working_faces"].num;
+    EXPECT_GE(faces[i], per_site[i] * 400.0);
+  }
+  EXPECT_GT(faces[1], faces[0]);
+}
+
 TEST(CvtApp, UsageErrorsExit2) {
   ScratchDir dir("cvt");
   const std::string o = " -o " + quote((dir / "r.obj").string());

@@ -26,7 +26,7 @@ using namespace gsp;
 
 struct Options {
   std::string input, output, regions, edge_length, init = "poisson";
-  std::size_t vertices = 0;
+  std::size_t vertices = 0, faces_per_site = cvt::CvtOptions{}.min_faces_per_site;
   int iterations = 50;
   double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
   std::uint64_t seed = 1;
@@ -53,6 +53,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--init", o.init, "initial sites: poisson (default), farthest or random (area-uniform)")
       ->check(CLI::IsMember({"poisson", "farthest", "random"}));
   app.add_option("--seed", o.seed, "random seed of the initial sites");
+  app.add_option("--faces-per-site", o.faces_per_site,
+                 "working-mesh resolution: the input is split 1-to-4 until it has at least this many faces per "
+                 "site (default " + std::to_string(o.faces_per_site) + "; more: slower, slightly finer regions; 0: no split)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--threads", o.threads,
                  "threads of the geodesic propagations (default 0: automatic, two or more on working meshes of 200k+ "
                  "faces, where ties make the remesh vary slightly from run to run); 1: the same output every run")
@@ -106,6 +110,7 @@ void run(cli::Context& ctx, const Options& o) {
                : o.init == "random"  ? cvt::InitialSites::random
                                      : cvt::InitialSites::poisson;
   co.seed = o.seed;
+  co.min_faces_per_site = o.faces_per_site;
   co.threads = o.threads;
   co.fix_regions = !o.no_fix;
   co.feature_angle = o.feature_angle;
@@ -117,6 +122,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["over_relaxation"] = o.over_relaxation;
   ctx.settings()["init"] = o.init;
   ctx.settings()["seed"] = o.seed;
+  ctx.settings()["faces_per_site"] = o.faces_per_site;
   ctx.settings()["threads"] = o.threads;
   ctx.settings()["fix_regions"] = co.fix_regions;
   ctx.settings()["feature_angle"] = o.feature_angle;
