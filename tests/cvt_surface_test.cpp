@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace {
 
@@ -200,4 +203,42 @@ TEST(CvtSurface, ClosingRoundsKeepAThinTubesTopology) {
   expect_clean(r.mesh);
   std::string why;
   EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
+}
+
+// Components remeshed side by side (threads = 2) give the one-thread output exactly: they are
+// put together in component order, whatever ran where; the iteration callback is never called
+// from two threads at once.
+TEST(CvtSurface, ComponentsSideBySideGiveTheOneThreadOutput) {
+  TriangleMesh m = test::icosphere(3);
+  add(m, test::icosphere(3), 0.8, {3, 0, 0});
+  add(m, test::grid(6), 1.0 / 3, {0, 3, 0});
+  add(m, test::icosphere(2), 0.6, {-3, 0, 0});
+  cvt::SurfaceRemeshResult r[2];
+  std::atomic<int> inside{0}, overlaps{0}, calls{0};
+  for (int i = 0; i < 2; ++i) {
+    cvt::SurfaceRemeshOptions o;
+    o.cvt.sites = 900;
+    o.cvt.threads = i == 0 ? 1 : 2;
+    o.cvt.on_iteration = [&](const cvt::IterationInfo&) {
+      if (inside.fetch_add(1) != 0) ++overlaps;
+      ++calls;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      inside.fetch_sub(1);
+    };
+    r[i] = cvt::remesh_surface(m, o);
+  }
+  ASSERT_EQ(r[0].components.size(), 4u);
+  EXPECT_EQ(r[0].remeshed(), 4u);
+  EXPECT_EQ(r[1].remeshed(), 4u);
+  EXPECT_EQ(r[0].mesh.positions, r[1].mesh.positions);
+  EXPECT_EQ(r[0].mesh.triangles, r[1].mesh.triangles);
+  EXPECT_EQ(r[0].vertex_label, r[1].vertex_label);
+  EXPECT_EQ(r[0].energy_curve, r[1].energy_curve);
+  for (std::size_t c = 0; c < 4; ++c) {
+    EXPECT_EQ(r[0].components[c].sites, r[1].components[c].sites);
+    EXPECT_EQ(r[0].components[c].output_vertices, r[1].components[c].output_vertices);
+  }
+  EXPECT_GT(calls.load(), 8);
+  EXPECT_EQ(overlaps.load(), 0);
+  expect_clean(r[1].mesh);
 }

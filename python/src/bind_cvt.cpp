@@ -142,8 +142,8 @@ remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. featur
 (degrees, 0 = off): edges whose faces' normals differ by more than this form crease curves,
 kept in the remesh as chains of edges with their corners as vertices (gsp-cvt --feature-angle).
 threads: of the propagations (0 = automatic, where ties make large meshes vary slightly from
-run to run; 1 = the same output every run). progress(fraction) per Lloyd iteration; Ctrl-C
-stops it.)");
+run to run; 1 = the same output every run); components are remeshed side by side on them, with
+the one-thread result. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
 }
 
 }  // namespace gsp::python

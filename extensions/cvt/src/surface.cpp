@@ -1,20 +1,19 @@
+#include <gsp/batch.hpp>
+#include "component_remesh.hpp"
+
 #include <gsp/cvt/components.hpp>
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <mutex>
 #include <unordered_map>
 #include <utility>
 
 namespace gsp::cvt {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.iterations = std::max(sum.iterations, s.iterations);
@@ -101,14 +100,6 @@ std::size_t component_sites(const CvtOptions& o, double area, double total_area)
   return std::size_t(std::llround(2.0 * area / (std::sqrt(3.0) * o.edge_length * o.edge_length)));
 }
 
-// Orients the component alike, keeping the orientation most of its faces had (so a mesh with
-// a few flipped faces keeps its normals). Returns the faces whose orientation changed.
-std::size_t orient_by_majority(TriangleMesh& m) {
-  const std::int64_t flipped = orient_consistently(m);
-  if (2 * std::size_t(flipped) <= m.num_faces()) return std::size_t(flipped);
-  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
-  return m.num_faces() - std::size_t(flipped);
-}
 
 }  // namespace
 
@@ -161,18 +152,68 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   out.area = total_area;
   out.vertices_split = fans.split;
   out.vertex_label.assign(mesh.num_vertices(), kInvalidIndex);
-  std::vector<TriangleMesh> kept;
-  bool first = true;
-  for (std::size_t ci = 0; ci < split.meshes.size(); ++ci) {
-    const TriangleMesh& input = split.meshes[ci];
+
+  // What each component gets: kept as it is for a reason known before any CVT, or remeshed.
+  const std::size_t nc = split.meshes.size();
+  std::vector<ComponentReport> reports(nc);
+  std::vector<std::size_t> todo;   // the components to remesh
+  std::vector<bool> planned(nc, false);
+  for (std::size_t ci = 0; ci < nc; ++ci) {
     const TopologyReport& t = topology[ci].report;
-    ComponentReport rep;
-    rep.input_vertices = input.num_vertices();
-    rep.input_faces = input.num_faces();
+    ComponentReport& rep = reports[ci];
+    rep.input_vertices = split.meshes[ci].num_vertices();
+    rep.input_faces = split.meshes[ci].num_faces();
     rep.area = topology[ci].area;
     rep.euler_characteristic = t.euler_characteristic;
     rep.boundary_loops = t.boundary_loops;
     const std::size_t n = component_sites(co, rep.area, total_area);
+    if (!t.is_manifold()) {
+      rep.outcome = ComponentOutcome::kept_nonmanifold;
+      rep.reason = std::to_string(t.nonmanifold_edges) + " non-manifold edges, " +
+                   std::to_string(t.nonmanifold_vertices) + " non-manifold vertices";
+    } else if (!topology[ci].orientable) {
+      rep.outcome = ComponentOutcome::kept_nonorientable;
+      rep.reason = "its faces cannot be oriented alike";
+    } else if (n < options.min_component_sites) {
+      rep.outcome = ComponentOutcome::kept_small;
+      rep.reason = "its share of the budget is " + std::to_string(n) + " sites (fewer than " +
+                   std::to_string(options.min_component_sites) + ")";
+    } else {
+      rep.sites = n;
+      todo.push_back(ci);
+      planned[ci] = true;
+    }
+  }
+
+  // The remeshes, each component on its own (they share nothing but the options), so several
+  // at once on several cores, the largest first; put together in component order below, so
+  // the output is the same whatever ran where.
+  std::vector<detail::ComponentRemesh> remeshes(nc);
+  std::stable_sort(todo.begin(), todo.end(), [&](std::size_t a, std::size_t b) { return reports[a].sites > reports[b].sites; });
+  std::size_t budget = 0;
+  for (std::size_t ci : todo) budget += reports[ci].sites;
+  // One component with most of the budget runs alone, its propagations on all the cores.
+  const bool dominated = !todo.empty() && 4 * reports[todo.front()].sites > 3 * budget;
+  const unsigned threads = co.threads == 1 || dominated ? 1u : resolve_threads(co.threads, todo.size());
+  std::mutex progress_mutex;   // the caller's callback is called from one thread at a time
+  CvtOptions shared = co;
+  if (threads > 1) shared.threads = 1;   // the cores are taken by the components (and then each is as on one thread)
+  if (threads > 1 && co.on_iteration)
+    shared.on_iteration = [&](const IterationInfo& info) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      co.on_iteration(info);
+    };
+  parallel_for(todo.size(), threads, [&](std::size_t j) {
+    const std::size_t ci = todo[j];
+    remeshes[ci] = detail::remesh_component(split.meshes[ci], shared, options, reports[ci]);
+  });
+
+  std::vector<TriangleMesh> kept;
+  bool first = true;
+  for (std::size_t ci = 0; ci < nc; ++ci) {
+    ComponentReport& rep = reports[ci];
+    const TriangleMesh& input = split.meshes[ci];
+    detail::ComponentRemesh& r = remeshes[ci];
     auto keep = [&](ComponentOutcome why, std::string reason) {
       rep.outcome = why;
       rep.reason = std::move(reason);
@@ -180,82 +221,32 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
       rep.output_faces = input.num_faces();
       kept.push_back(input_faces(mesh, split.face_ids[ci]));
     };
-    if (!t.is_manifold()) {
-      keep(ComponentOutcome::kept_nonmanifold, std::to_string(t.nonmanifold_edges) + " non-manifold edges, " +
-                                                   std::to_string(t.nonmanifold_vertices) + " non-manifold vertices");
-    } else if (!topology[ci].orientable) {
-      keep(ComponentOutcome::kept_nonorientable, "its faces cannot be oriented alike");
-    } else if (n < options.min_component_sites) {
-      keep(ComponentOutcome::kept_small, "its share of the budget is " + std::to_string(n) + " sites (fewer than " +
-                                             std::to_string(options.min_component_sites) + ")");
+    if (!planned[ci]) {
+      keep(rep.outcome, rep.reason);
+    } else if (r.error) {
+      keep(ComponentOutcome::kept_error, r.why);
     } else {
-      TriangleMesh oriented = input;
-      rep.faces_flipped = orient_by_majority(oriented);
-      rep.sites = n;
-      try {
-        CvtOptions c = co;
-        c.sites = n;
-        c.edge_length = 0;
-        std::size_t defects = 0;   // of the last attempt (same_topology_per_component)
-        // Other initial sites only where a few places went wrong (SurfaceRemeshOptions::retries).
-        const std::size_t local_defects =
-            std::max<std::size_t>(1, std::size_t(options.retry_defect_fraction * double(n)));
-        RemeshOptions remesh_options = options.remesh;
-        if (!remesh_options.accept_dual)
-          remesh_options.accept_dual = [&](const TriangleMesh& dual) {
-            std::size_t wrong = 0;
-            same_topology_per_component(oriented, dual, nullptr, &wrong);
-            return wrong <= local_defects;
-          };
-        auto attempt = [&](CvtResult& cvt, RemeshResult& r, std::string& why) {
-          auto t0 = Clock::now();
-          cvt = compute_cvt(oriented, c);
-          rep.cvt_seconds += seconds_since(t0);
-          t0 = Clock::now();
-          r = restricted_delaunay(cvt, remesh_options);
-          rep.remesh_seconds += seconds_since(t0);
-          return same_topology_per_component(oriented, r.mesh, &why, &defects);
-        };
-        CvtResult cvt;
-        RemeshResult r;
-        std::string why;
-        bool ok = attempt(cvt, r, why);
-        if (!ok && c.feature_angle > 0 && cvt.stats.feature_sites > 0) {
-          // The feature curves' bands leave the closing rounds nothing to add where the dual
-          // goes wrong inside them (a junction in a strip between two curves): the component
-          // is remeshed again without its features rather than kept as it was.
-          c.feature_angle = 0;
-          rep.features_dropped = true;
-          ok = attempt(cvt, r, why);
-        }
-        for (std::size_t k = 1; !ok && defects <= local_defects && k <= options.retries; ++k) {
-          c.seed = co.seed + k;
-          ++rep.retries;
-          ok = attempt(cvt, r, why);
-        }
-        out.remesh_seconds += rep.remesh_seconds;
-        if (!ok) {
-          keep(ComponentOutcome::kept_topology,
-               "the remesh had " + why +
-                   (rep.retries ? " (and " + std::to_string(rep.retries) + " more from other initial sites)" : ""));
-        } else {
-          for (std::size_t v = 0; v < input.num_vertices(); ++v)
-            if (cvt.vertex_label[v] != kInvalidIndex)
-              out.vertex_label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + cvt.vertex_label[v]);
-          out.sites += cvt.sites.size();
-          out.energy += cvt.energy;
-          add_curve(out.energy_curve, cvt.energy_curve);
-          add_stats(out.cvt_stats, cvt.stats, first);
-          add_stats(out.remesh_stats, r.stats);
-          first = false;
-          rep.output_vertices = r.mesh.num_vertices();
-          rep.output_faces = r.mesh.num_faces();
-          append(out.mesh, r.mesh);
-        }
-      } catch (const Error& e) {
-        keep(ComponentOutcome::kept_error, e.what());
+      out.remesh_seconds += rep.remesh_seconds;
+      if (!r.ok) {
+        keep(ComponentOutcome::kept_topology,
+             "the remesh had " + r.why +
+                 (rep.retries ? " (and " + std::to_string(rep.retries) + " more from other initial sites)" : ""));
+      } else {
+        for (std::size_t v = 0; v < input.num_vertices(); ++v)
+          if (r.vertex_label[v] != kInvalidIndex)
+            out.vertex_label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + r.vertex_label[v]);
+        out.sites += r.sites;
+        out.energy += r.energy;
+        add_curve(out.energy_curve, r.energy_curve);
+        add_stats(out.cvt_stats, r.cvt_stats, first);
+        add_stats(out.remesh_stats, r.remesh_stats);
+        first = false;
+        rep.output_vertices = r.mesh.num_vertices();
+        rep.output_faces = r.mesh.num_faces();
+        append(out.mesh, r.mesh);
       }
     }
+    r = detail::ComponentRemesh();
     out.components.push_back(std::move(rep));
   }
   for (const TriangleMesh& k : kept) append(out.mesh, k);

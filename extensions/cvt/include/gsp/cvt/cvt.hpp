@@ -91,7 +91,9 @@ struct CvtOptions {
   // threads a propagation's ties fall in the order the threads reach them (GSP's order
   // effects), a face near a border between two regions can change sides, and the remesh then
   // differs from run to run in a few places; on one thread it is the same every time, at
-  // 10-20% more time for working meshes that large (docs/cvt.md).
+  // 10-20% more time for working meshes that large (docs/cvt.md). remesh_surface remeshes
+  // the components side by side on that many threads instead (0: all cores), each of them on
+  // one thread, unless one component has more than 3/4 of the sites.
   unsigned threads = 0;
   IterationFn on_iteration;
 };

@@ -1,0 +1,33 @@
+#pragma once
+// One component of remesh_surface: its CVT and dual, tried again without features or from
+// other initial sites where the remesh lacks the component's topology. Independent of the
+// other components, so remesh_surface runs several side by side.
+#include <gsp/cvt/remesh.hpp>
+#include <gsp/cvt/surface.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gsp::cvt::detail {
+
+// One component's remesh as remesh_surface puts it together: its dual or why there is none.
+struct ComponentRemesh {
+  bool ok = false, error = false;
+  std::string why;                   // the last attempt's defects, or the error's message
+  std::vector<Index> vertex_label;   // CvtResult::vertex_label
+  std::size_t sites = 0;
+  double energy = 0;
+  std::vector<double> energy_curve;
+  CvtStats cvt_stats;
+  RemeshStats remesh_stats;
+  TriangleMesh mesh;
+};
+
+// The CVT and its dual, again without the features or from other initial sites where the
+// remesh lacks the component's topology (SurfaceRemeshOptions::retries); rep.sites is the
+// component's share of the budget. Fills rep's orientation, retry and time figures; keeps
+// nothing of the working mesh. A gsp::Error is reported in the result, anything else thrown.
+ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
+                                 ComponentReport& rep);
+
+}  // namespace gsp::cvt::detail
