@@ -147,6 +147,29 @@ def test_remesh_warns_for_the_components_it_keeps():
     assert len(RF) > 100                                                   # and the sphere, remeshed
 
 
+def test_remesh_components_side_by_side_equal_one_thread():
+    # Three spheres remeshed on two threads (one per component at a time): the same arrays as
+    # on one thread; the progress callback runs from either thread, one call at a time, and an
+    # exception from it still stops the call.
+    V, F = icosphere(3)
+    parts = [(V, F), (0.8 * V + [3, 0, 0], F), (0.7 * V + [-3, 0, 0], F)]
+    AV = np.vstack([p[0] for p in parts])
+    AF = np.vstack([p[1] + i * len(V) for i, p in enumerate(parts)])
+    calls = []
+    one = gsp.remesh(AV, AF, vertices=600, iterations=6, threads=1)
+    two = gsp.remesh(AV, AF, vertices=600, iterations=6, threads=2, progress=calls.append)
+    assert np.array_equal(one[0], two[0]) and np.array_equal(one[1], two[1])
+    assert len(calls) > 6 and all(0.0 <= c <= 1.0 for c in calls)
+
+    class Stop(Exception):
+        pass
+
+    def stop(fraction):
+        raise Stop()
+
+    with pytest.raises(Stop):
+        gsp.remesh(AV, AF, vertices=600, iterations=6, threads=2, progress=stop)
+
 def _box():
     # [0,2]x[0,1]x[0,1] as 12 triangles, outward.
     V = np.array([[(i & 1) * 2.0, (i >> 1) & 1, (i >> 2) & 1] for i in range(8)], dtype=float)
