@@ -2,7 +2,6 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <gsp/batch.hpp>
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 
 #include <limits>
@@ -47,8 +46,7 @@ py::object distance(const PointCloudGeodesics& s, const py::handle& sources, con
   return py::make_tuple(std::move(d), labels_to_array(r.source));
 }
 
-// Row i: the field from points[i] at the targets (the same points by default). Rows run in
-// parallel on the core's pool, the GIL released.
+// Row i: the field from points[i] at the targets (the same points by default), the GIL released.
 py::array_t<double> distance_matrix(const PointCloudGeodesics& s, const py::handle& points, const py::handle& targets,
                                     const std::string& method, unsigned threads) {
   const std::vector<Index> rows = indices_from(points, s.num_points(), "points");
@@ -56,16 +54,12 @@ py::array_t<double> distance_matrix(const PointCloudGeodesics& s, const py::hand
   if (rows.empty()) throw py::value_error("points is empty");
   pointcloud::PointGeodesicOptions o;
   o.method = method_from(method);
-  py::array_t<double> out({py::ssize_t(rows.size()), py::ssize_t(cols.size())});
-  double* data = out.mutable_data();
+  std::vector<double> matrix;
   {
     py::gil_scoped_release nogil;
-    parallel_for(rows.size(), resolve_threads(threads, rows.size()), [&](std::size_t i) {
-      const pointcloud::PointCloudResult r = s.compute({pointcloud::PointSource::at_point(rows[i])}, o);
-      for (std::size_t j = 0; j < cols.size(); ++j) data[i * cols.size() + j] = r.distance[cols[j]];
-    });
+    matrix = pointcloud::distance_matrix(s, rows, cols, o, threads);
   }
-  return out;
+  return to_array(std::move(matrix)).reshape({py::ssize_t(rows.size()), py::ssize_t(cols.size())});
 }
 
 }  // namespace

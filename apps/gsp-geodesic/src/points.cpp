@@ -23,15 +23,10 @@ void run_points_many(cli::Context& ctx, const Options& o, const cli::LoadedMesh&
   const unsigned threads = resolve_threads(o.threads, n);
   ctx.settings()["threads"] = threads;
   if (o.matrix) {
-    std::vector<Index> points;
+    std::vector<Index> points;   // (--matrix takes point indices only)
     for (const pointcloud::PointSource& s : sources) points.push_back(s.point);
-    std::vector<double> matrix(n * n);
-    ctx.timer().time("compute", [&] {
-      parallel_for(n, threads, [&](std::size_t i) {
-        const pointcloud::PointCloudResult r = cloud.compute({sources[i]}, go);
-        for (std::size_t j = 0; j < n; ++j) matrix[i * n + j] = r.distance[points[j]];
-      });
-    });
+    const std::vector<double> matrix = ctx.timer().time(
+        "compute", [&] { return pointcloud::distance_matrix(cloud, points, points, go, threads); });
     ctx.stats()["result"]["matrix_size"] = n;
     ctx.timer().time("write", [&] { write_matrix(o.output, matrix, n); });
     return;

@@ -1,6 +1,6 @@
-#include <gsp/batch.hpp>
 #include "component_remesh.hpp"
 
+#include <gsp/batch.hpp>
 #include <gsp/cvt/components.hpp>
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
@@ -99,7 +99,6 @@ std::size_t component_sites(const CvtOptions& o, double area, double total_area)
   if (o.sites > 0) return std::size_t(std::llround(double(o.sites) * area / total_area));
   return std::size_t(std::llround(2.0 * area / (std::sqrt(3.0) * o.edge_length * o.edge_length)));
 }
-
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 // carry offsets of 1e5 and more), build the k-d tree, the symmetric neighbour graph and the
 // tangent frames once, and the local triangles; compute() seeds the sources and runs GSP on
 // the triangles, GSP on the graph, or Dijkstra.
+#include <gsp/batch.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/pointcloud/point_cloud_geodesics.hpp>
 
@@ -275,6 +276,20 @@ std::vector<Vec3> PointCloudGeodesics::normals() const {
   std::vector<Vec3> out(impl_->unique_of.size());
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = impl_->frames.normal[impl_->unique_of[i]];
   return out;
+}
+
+std::vector<double> distance_matrix(const PointCloudGeodesics& cloud, const std::vector<Index>& rows,
+                                    const std::vector<Index>& cols, const PointGeodesicOptions& options,
+                                    unsigned threads) {
+  for (const std::vector<Index>* list : {&rows, &cols})
+    for (Index i : *list)
+      if (i >= cloud.num_points()) throw InvalidInput("distance_matrix: point " + std::to_string(i) + " out of range");
+  std::vector<double> matrix(rows.size() * cols.size());
+  parallel_for(rows.size(), resolve_threads(threads, rows.size()), [&](std::size_t i) {
+    const PointCloudResult r = cloud.compute({PointSource::at_point(rows[i])}, options);
+    for (std::size_t j = 0; j < cols.size(); ++j) matrix[i * cols.size() + j] = r.distance[cols[j]];
+  });
+  return matrix;
 }
 
 PointCloudResult point_cloud_geodesic_distances(const TriangleMesh& cloud, const std::vector<PointSource>& sources,

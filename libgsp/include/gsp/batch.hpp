@@ -17,7 +17,8 @@ unsigned resolve_threads(unsigned threads, std::size_t jobs);
 // taking indices from a shared counter. Inside, a query's automatic thread count means one
 // (the cores are taken). The first exception thrown by a job stops the handing out of work
 // and is rethrown once all threads have stopped. The pool of compute_many and
-// distance_matrix below, and of the extensions' many-query modes (point clouds).
+// distance_matrix below, and of the extensions' (point clouds' many queries, the CVT's
+// components side by side).
 void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t)>& job);
 
 // One GeodesicResult per query, in the order given. The first exception thrown by any query

@@ -183,6 +183,14 @@ class PointCloudGeodesics {
   std::unique_ptr<Impl> impl_;
 };
 
+// Row i: the distances from point rows[i] alone at the points cols[j], row-major
+// (rows.size() x cols.size()); the rows are computed side by side on gsp::parallel_for with
+// `threads` (0: all cores), as gsp::distance_matrix does on a mesh. Not exactly symmetric:
+// each row is its own propagation.
+std::vector<double> distance_matrix(const PointCloudGeodesics& cloud, const std::vector<Index>& rows,
+                                    const std::vector<Index>& cols, const PointGeodesicOptions& options = {},
+                                    unsigned threads = 0);
+
 // One-off: prepare and compute.
 PointCloudResult point_cloud_geodesic_distances(const TriangleMesh& cloud, const std::vector<PointSource>& sources,
                                                 const PointGeodesicOptions& options = {},
