@@ -4,6 +4,7 @@
 
 #include <gsp/connectivity.hpp>
 #include <gsp/cvt/components.hpp>
+#include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/topology.hpp>
@@ -62,7 +63,8 @@ TEST(CvtSurface, TwoClosedComponentsShareTheBudgetByArea) {
 }
 
 // An open square beside a sphere: the square keeps its one boundary loop; a non-manifold book
-// and a tiny triangle are kept as they are, each with its reason.
+// and a tiny triangle are kept as they are, each with its reason (the triangle has fewer
+// vertices than min_component_sites and no angle below 20 degrees).
 TEST(CvtSurface, OpenNonManifoldAndTinyComponents) {
   TriangleMesh m = test::icosphere(3);
   add(m, test::grid(8), 0.5, {3, 0, 0});          // area 16
@@ -79,6 +81,7 @@ TEST(CvtSurface, OpenNonManifoldAndTinyComponents) {
   EXPECT_EQ(r.components[2].reason, "1 non-manifold edges, 2 non-manifold vertices");
   EXPECT_EQ(r.components[3].outcome, ComponentOutcome::kept_small);
   EXPECT_EQ(r.components[3].sites, 0u);
+  EXPECT_EQ(r.components[3].reason, "its share of the budget is 0 sites (fewer than 20), it has 3 vertices and no angle below 20 deg");
   EXPECT_EQ(r.components[3].output_faces, 1u);
 
   // The kept components are the last faces, as in the input.
@@ -93,6 +96,41 @@ TEST(CvtSurface, OpenNonManifoldAndTinyComponents) {
   EXPECT_EQ(t.boundary_loops, 3u);      // square, book, triangle
   EXPECT_EQ(t.euler_characteristic, 2 + 1 + 1 + 1);
   EXPECT_EQ(cvt::duplicate_vertices(r.mesh), 0u);
+}
+
+// A small sphere of many vertices whose share of the budget is below min_component_sites is
+// remeshed with that many sites instead of being kept with all its vertices and their angles;
+// with fewer vertices than that and no room left under max_small_raise_fraction it is kept.
+TEST(CvtSurface, SmallComponentOfManyVerticesIsRemeshedWithTheFewestSites) {
+  TriangleMesh m = test::icosphere(3);                  // 642 vertices, area about 4 pi
+  const TriangleMesh small = test::icosphere(2);        // 162 vertices
+  add(m, small, 0.15, {3, 0, 0});
+  TriangleMesh spike = test::tetrahedron();             // 4 vertices, one far out: angles below 20 degrees
+  spike.positions[0] = 8.0 * spike.positions[0];
+  add(m, spike, 0.05, {0, 3, 0});
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 400;                                    // the small sphere's share: about 9
+  o.max_small_raise_fraction = 0.0;                     // no room for the spiked tetrahedron
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 3u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed) << r.components[0].reason;
+  EXPECT_GE(r.components[0].sites, 380u);
+  ASSERT_EQ(r.components[1].outcome, ComponentOutcome::remeshed) << r.components[1].reason;
+  EXPECT_EQ(r.components[1].sites, o.min_component_sites);
+  EXPECT_LT(r.components[1].output_vertices, 40u);      // not its 162
+  EXPECT_EQ(r.components[2].outcome, ComponentOutcome::kept_small);
+  EXPECT_EQ(r.components[2].sites, 0u);
+  EXPECT_NE(r.components[2].reason.find("room"), std::string::npos) << r.components[2].reason;
+  expect_clean(r.mesh);
+  std::string why;
+  EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
+  // The remeshed small sphere has no angle below 20 degrees (its remesh is kept above that
+  // even where the input's angles were larger): its faces follow the big sphere's.
+  TriangleMesh part;
+  part.positions = r.mesh.positions;
+  const std::size_t first = r.components[0].output_faces;
+  for (std::size_t f = first; f < first + r.components[1].output_faces; ++f) part.triangles.push_back(r.mesh.triangles[f]);
+  EXPECT_GE(cvt::measure_mesh_quality(part).min_angle, 20.0);
 }
 
 // A sphere with every seventh face reversed is oriented by its majority and remeshed.

@@ -1,12 +1,15 @@
+#include "component_budget.hpp"
 #include "component_remesh.hpp"
 
 #include <gsp/batch.hpp>
 #include <gsp/cvt/components.hpp>
+#include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <unordered_map>
 #include <utility>
@@ -100,6 +103,18 @@ std::size_t component_sites(const CvtOptions& o, double area, double total_area)
   return std::size_t(std::llround(2.0 * area / (std::sqrt(3.0) * o.edge_length * o.edge_length)));
 }
 
+// Issue 22's quality floor (degrees): a component too small for its share of the budget is
+// remeshed with min_component_sites to reach it (one of fewer vertices only where its own
+// angles do not), and its remesh is kept where it reaches it, even if the input's angles were
+// larger.
+constexpr double kSmallComponentAngle = 20.0;
+
+std::string degrees(double a) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g deg", a);
+  return buf;
+}
+
 }  // namespace
 
 const char* outcome_name(ComponentOutcome o) {
@@ -156,7 +171,9 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   const std::size_t nc = split.meshes.size();
   std::vector<ComponentReport> reports(nc);
   std::vector<std::size_t> todo;   // the components to remesh
-  std::vector<bool> planned(nc, false);
+  std::vector<bool> planned(nc, false), raised(nc, false);
+  std::vector<std::size_t> candidates;   // manifold and orientable: remeshed unless too small
+  std::vector<detail::ComponentBudgetItem> items;
   for (std::size_t ci = 0; ci < nc; ++ci) {
     const TopologyReport& t = topology[ci].report;
     ComponentReport& rep = reports[ci];
@@ -165,7 +182,6 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     rep.area = topology[ci].area;
     rep.euler_characteristic = t.euler_characteristic;
     rep.boundary_loops = t.boundary_loops;
-    const std::size_t n = component_sites(co, rep.area, total_area);
     if (!t.is_manifold()) {
       rep.outcome = ComponentOutcome::kept_nonmanifold;
       rep.reason = std::to_string(t.nonmanifold_edges) + " non-manifold edges, " +
@@ -173,12 +189,29 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     } else if (!topology[ci].orientable) {
       rep.outcome = ComponentOutcome::kept_nonorientable;
       rep.reason = "its faces cannot be oriented alike";
-    } else if (n < options.min_component_sites) {
-      rep.outcome = ComponentOutcome::kept_small;
-      rep.reason = "its share of the budget is " + std::to_string(n) + " sites (fewer than " +
-                   std::to_string(options.min_component_sites) + ")";
     } else {
-      rep.sites = n;
+      candidates.push_back(ci);
+      const std::size_t share = component_sites(co, rep.area, total_area);
+      const bool tiny = share < options.min_component_sites && rep.input_vertices < options.min_component_sites;
+      items.push_back({share, rep.input_vertices, rep.area,
+                       tiny && measure_mesh_quality(split.meshes[ci]).min_angle >= kSmallComponentAngle});
+    }
+  }
+  const std::vector<std::size_t> sites = detail::plan_component_sites(
+      items, options.min_component_sites, options.max_small_raise_fraction);
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const std::size_t ci = candidates[k];
+    ComponentReport& rep = reports[ci];
+    if (sites[k] == 0) {
+      rep.outcome = ComponentOutcome::kept_small;
+      rep.reason = "its share of the budget is " + std::to_string(items[k].share) + " sites (fewer than " +
+                   std::to_string(options.min_component_sites) + "), it has " + std::to_string(rep.input_vertices) +
+                   " vertices and " +
+                   (items[k].well_shaped ? "no angle below " + degrees(kSmallComponentAngle)
+                                         : std::string("the budget's room for small components is taken"));
+    } else {
+      rep.sites = sites[k];
+      raised[ci] = items[k].share < options.min_component_sites;
       todo.push_back(ci);
       planned[ci] = true;
     }
@@ -226,10 +259,19 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
       keep(ComponentOutcome::kept_error, r.why);
     } else {
       out.remesh_seconds += rep.remesh_seconds;
+      double remeshed_angle = 0, input_angle = 0;
       if (!r.ok) {
         keep(ComponentOutcome::kept_topology,
              "the remesh had " + r.why +
                  (rep.retries ? " (and " + std::to_string(rep.retries) + " more from other initial sites)" : ""));
+      } else if (raised[ci] && (remeshed_angle = measure_mesh_quality(r.mesh).min_angle) < kSmallComponentAngle &&
+                 remeshed_angle < (input_angle = measure_mesh_quality(input).min_angle)) {
+        // Raised above its share, a small component's remesh is kept where its angles are
+        // good (fewer vertices than the input's) or at least better than the input's.
+        keep(ComponentOutcome::kept_small, "its share of the budget is below " +
+                                               std::to_string(options.min_component_sites) +
+                                               " sites and its remesh's smallest angle (" + degrees(remeshed_angle) +
+                                               ") was below its own (" + degrees(input_angle) + ")");
       } else {
         for (std::size_t v = 0; v < input.num_vertices(); ++v)
           if (r.vertex_label[v] != kInvalidIndex)

@@ -24,10 +24,16 @@ namespace gsp::cvt {
 struct SurfaceRemeshOptions {
   CvtOptions cvt;   // sites: the budget of the whole mesh; or edge_length, for every component
   RemeshOptions remesh;
-  // A component whose share of the budget is below this many sites is kept as it is: the dual
-  // of so few regions cannot be trusted to have the component's topology (a closed surface
-  // needs at least 4, a torus many more).
+  // The fewest sites a component is remeshed with: the dual of fewer regions cannot be trusted
+  // to have the component's topology (a closed surface needs at least 4, a torus many more).
+  // A component whose share of the budget is smaller gets this many when it has at least as
+  // many vertices (kept, it would add all of them to the output), and one with fewer vertices
+  // and an angle below 20 degrees while the sites so added stay within max_small_raise_fraction
+  // of the budget (the largest first; added to the budget, the other components keep their
+  // shares); the others are kept as they are. A component remeshed above its share is kept as it was where its remesh's
+  // smallest angle is below 20 degrees and below its own.
   std::size_t min_component_sites = 20;
+  double max_small_raise_fraction = 0.05;
   // A component whose remesh lacks its topology at a few places only (at most
   // retry_defect_fraction of its sites, at least one, are non-manifold or otherwise wrong, or
   // only its Euler characteristic or loops differ) is remeshed again from other initial sites
@@ -42,7 +48,7 @@ struct SurfaceRemeshOptions {
 
 enum class ComponentOutcome {
   remeshed,
-  kept_small,          // share of the budget below min_component_sites
+  kept_small,          // share of the budget and vertex count below min_component_sites
   kept_nonmanifold,    // non-manifold edges or vertices
   kept_nonorientable,  // no consistent orientation exists
   kept_topology,       // the remesh was not a manifold with the component's topology
