@@ -133,6 +133,29 @@ TEST(CvtSurface, SmallComponentOfManyVerticesIsRemeshedWithTheFewestSites) {
   EXPECT_GE(cvt::measure_mesh_quality(part).min_angle, 20.0);
 }
 
+// A thin tube too small for its share of the budget: at 20 sites its regions wrap round it and
+// the dual is no tube, so it is remeshed again with twice the sites (within its own vertex
+// count) and keeps its topology, with fewer vertices than its input.
+TEST(CvtSurface, ThinSmallComponentGetsMoreSitesWhereTwentyLoseItsTopology) {
+  TriangleMesh m = test::icosphere(3);                  // area about 4 pi
+  TriangleMesh tube = test::cylinder(12, 24);           // 300 vertices, radius 1, length 24
+  for (Vec3& p : tube.positions) p = Vec3{0.05 * p.x, 0.05 * p.y, 0.1 * p.z};
+  add(m, tube, 1.0, {3, 0, 0});                         // radius 0.05, length 2.4: area about 0.75
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 300;                                    // the tube's share: about 17
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  ASSERT_EQ(r.components.size(), 2u);
+  const cvt::ComponentReport& c = r.components[1];
+  EXPECT_EQ(c.sites, o.min_component_sites);
+  ASSERT_EQ(c.outcome, ComponentOutcome::remeshed) << c.reason;
+  EXPECT_GE(c.grown, 1u);
+  EXPECT_LT(c.output_vertices, 300u);
+  EXPECT_EQ(c.boundary_loops, 2u);
+  expect_clean(r.mesh);
+  std::string why;
+  EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
+}
+
 // A sphere with every seventh face reversed is oriented by its majority and remeshed.
 TEST(CvtSurface, InconsistentOrientationIsFixed) {
   TriangleMesh m = test::icosphere(3);

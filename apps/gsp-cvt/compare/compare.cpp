@@ -130,6 +130,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
     j["reason"] = c.reason;
     j["features_dropped"] = c.features_dropped;
     j["retries"] = c.retries;
+    j["grown"] = c.grown;
     row.components.push_back(std::move(j));
   }
   return row;

@@ -105,6 +105,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
     j["faces_flipped"] = c.faces_flipped;
     j["features_dropped"] = c.features_dropped;
     j["retries"] = c.retries;
+    j["grown"] = c.grown;
     j["output_vertices"] = c.output_vertices;
     j["output_faces"] = c.output_faces;
     j["outcome"] = cvt::outcome_name(c.outcome);

@@ -27,7 +27,7 @@ std::size_t orient_by_majority(TriangleMesh& m) {
 }  // namespace
 
 ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
-                                 ComponentReport& rep) {
+                                 ComponentReport& rep, bool grow) {
   ComponentRemesh out;
   TriangleMesh oriented = input;
   rep.faces_flipped = orient_by_majority(oriented);
@@ -69,6 +69,15 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
     for (std::size_t k = 1; !ok && defects <= local_defects && k <= options.retries; ++k) {
       c.seed = co.seed + k;
       ++rep.retries;
+      ok = attempt(cvt, r, out.why);
+    }
+    // A small component (raised to min_component_sites) may be too thin for so few regions
+    // (a pin whose regions wrap round it): it gets twice the sites, twice at most, while that
+    // stays within its own vertex count (so it never outgrows the input it would be kept as).
+    for (int k = 0; !ok && grow && k < 2 && 2 * c.sites <= input.num_vertices(); ++k) {
+      c.sites *= 2;
+      c.seed = co.seed;
+      ++rep.grown;
       ok = attempt(cvt, r, out.why);
     }
     out.ok = ok;

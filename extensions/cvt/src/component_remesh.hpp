@@ -24,10 +24,12 @@ struct ComponentRemesh {
 };
 
 // The CVT and its dual, again without the features or from other initial sites where the
-// remesh lacks the component's topology (SurfaceRemeshOptions::retries); rep.sites is the
-// component's share of the budget. Fills rep's orientation, retry and time figures; keeps
-// nothing of the working mesh. A gsp::Error is reported in the result, anything else thrown.
+// remesh lacks the component's topology (SurfaceRemeshOptions::retries), and with `grow`
+// (a component raised above its share) with twice the sites, twice at most, within its own
+// vertex count; rep.sites is the component's share of the budget. Fills rep's orientation,
+// retry and time figures; keeps nothing of the working mesh. A gsp::Error is reported in the
+// result, anything else thrown.
 ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
-                                 ComponentReport& rep);
+                                 ComponentReport& rep, bool grow = false);
 
 }  // namespace gsp::cvt::detail

@@ -237,7 +237,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     };
   parallel_for(todo.size(), threads, [&](std::size_t j) {
     const std::size_t ci = todo[j];
-    remeshes[ci] = detail::remesh_component(split.meshes[ci], shared, options, reports[ci]);
+    remeshes[ci] = detail::remesh_component(split.meshes[ci], shared, options, reports[ci], raised[ci]);
   });
 
   std::vector<TriangleMesh> kept;

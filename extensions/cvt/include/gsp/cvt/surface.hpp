@@ -67,6 +67,10 @@ struct ComponentReport {
   // remeshed without its features (sharp edges chamfered as with feature_angle = 0).
   bool features_dropped = false;
   std::size_t retries = 0;                 // remeshes from other initial sites (SurfaceRemeshOptions::retries)
+  // Remeshes with twice the sites of the one before (a component raised to min_component_sites
+  // whose dual lacked its topology: too thin for so few regions; at most 2, within its vertex
+  // count).
+  std::size_t grown = 0;
   std::size_t output_vertices = 0, output_faces = 0;
   ComponentOutcome outcome = ComponentOutcome::remeshed;
   std::string reason;                      // empty when remeshed
