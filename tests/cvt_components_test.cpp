@@ -34,6 +34,26 @@ TEST(CvtComponents, SplitCountsAndTopology) {
   EXPECT_FALSE(cvt::component_topology(s.meshes[2]).report.is_manifold());
 }
 
+// Doubled faces (either orientation) and faces with a repeated vertex are left out, the first
+// of equal faces kept, the others in order; the vertices stay as they were.
+TEST(CvtComponents, DuplicateFacesDropped) {
+  TriangleMesh m = test::tetrahedron();
+  m.triangles.push_back(m.triangles[2]);                                       // face 4: a copy of 2
+  m.triangles.push_back({m.triangles[0][0], m.triangles[0][2], m.triangles[0][1]});   // 5: 0 reversed
+  m.triangles.push_back({1, 2, 1});                                            // 6: a repeated vertex
+  m.triangles.push_back(m.triangles[3]);                                       // 7: a copy of 3
+  const cvt::FaceCleanup c = cvt::drop_duplicate_faces(m);
+  EXPECT_EQ(c.duplicate_faces, 3u);
+  EXPECT_EQ(c.repeated_vertex_faces, 1u);
+  EXPECT_EQ(c.face_source, (std::vector<Index>{0, 1, 2, 3}));
+  ASSERT_EQ(c.mesh.num_faces(), 4u);
+  for (std::size_t f = 0; f < 4; ++f) EXPECT_EQ(c.mesh.triangles[f], m.triangles[f]);
+  EXPECT_EQ(c.mesh.positions.size(), m.positions.size());
+  const TopologyReport t = analyze_topology(c.mesh, build_connectivity(c.mesh));
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_EQ(t.euler_characteristic, 2);
+}
+
 TEST(CvtComponents, OrientationAndDuplicates) {
   TriangleMesh t = test::flipped_face_tetrahedron();
   EXPECT_EQ(cvt::orient_consistently(t), 1);   // the reversed face, against the first face's choice

@@ -156,6 +156,29 @@ TEST(CvtSurface, ThinSmallComponentGetsMoreSitesWhereTwentyLoseItsTopology) {
   EXPECT_TRUE(cvt::same_topology_per_component(m, r.mesh, &why)) << why;
 }
 
+// A sphere whose every face comes three times (once reversed), as in an STL exported per
+// body, plus a face with a repeated vertex: each doubled face makes its edges non-manifold, so
+// before drop_duplicate_faces the sphere was kept as it was; now it is the sphere, remeshed.
+TEST(CvtSurface, TripledFacesAreTheSurfaceOnce) {
+  const TriangleMesh sphere = test::icosphere(3);
+  TriangleMesh m = sphere;
+  for (const Triangle& t : sphere.triangles) m.triangles.push_back(t);
+  for (const Triangle& t : sphere.triangles) m.triangles.push_back({t[0], t[2], t[1]});
+  m.triangles.push_back({0, 0, 1});
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 300;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  EXPECT_EQ(r.duplicate_faces_removed, 2 * sphere.num_faces());
+  EXPECT_EQ(r.repeated_vertex_faces_removed, 1u);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].outcome, ComponentOutcome::remeshed) << r.components[0].reason;
+  EXPECT_EQ(r.components[0].input_faces, sphere.num_faces());
+  expect_clean(r.mesh);
+  std::string why;
+  EXPECT_TRUE(cvt::same_topology_per_component(sphere, r.mesh, &why)) << why;
+  EXPECT_GT(signed_volume(r.mesh), 0.9 * (4.0 / 3.0) * M_PI);   // the first copy's orientation
+}
+
 // A sphere with every seventh face reversed is oriented by its majority and remeshed.
 TEST(CvtSurface, InconsistentOrientationIsFixed) {
   TriangleMesh m = test::icosphere(3);

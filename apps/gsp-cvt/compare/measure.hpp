@@ -26,7 +26,8 @@ struct Measures {
   // non-manifold edges; cvt::detect_features) to the output, % of the diagonal: how much of a
   // crease or a corner the remesh cut off. NaN: no feature edge.
   double feature_distance_percent = NAN;
-  // Manifold, oriented, no duplicates, the per-component topology of the input with its
+  // Manifold, oriented, no duplicates, the per-component topology of the input without its
+  // doubled faces and faces with a repeated vertex (cvt::drop_duplicate_faces) and with its
   // non-manifold vertices split (cvt::split_nonmanifold_vertices).
   bool topology_kept = false;
   std::string topology_difference;

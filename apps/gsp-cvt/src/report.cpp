@@ -78,6 +78,8 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
   res["components_remeshed"] = remesh.remeshed();
   res["components_kept"] = remesh.components.size() - remesh.remeshed();
   res["vertices_split"] = remesh.vertices_split;
+  res["duplicate_faces_removed"] = remesh.duplicate_faces_removed;
+  res["repeated_vertex_faces_removed"] = remesh.repeated_vertex_faces_removed;
   res["junctions"] = remesh.remesh_stats.junctions;
   res["junctions_over_three"] = remesh.remesh_stats.junctions_over_three;
   res["duplicate_triangles"] = remesh.remesh_stats.duplicate_triangles;
@@ -129,6 +131,9 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (dropped)
     ctx.note(std::to_string(dropped) + " components remeshed without their feature curves (with them the remesh did not "
                                        "have the component's topology)");
+  if (r.duplicate_faces_removed || r.repeated_vertex_faces_removed)
+    ctx.note(std::to_string(r.duplicate_faces_removed) + " faces on the same three vertices as an earlier face and " +
+             std::to_string(r.repeated_vertex_faces_removed) + " faces with a repeated vertex were left out");
   if (r.vertices_split)
     ctx.note(std::to_string(r.vertices_split) +
              " vertices where fans of faces only touched were split (one per fan) before remeshing");

@@ -151,8 +151,10 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   if (co.edge_length > 0 && !std::isfinite(co.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
   if (!(options.retry_defect_fraction >= 0))
     throw InvalidInput("cvt: the retries' defect fraction must be 0 or more");
-  // The surface the input describes: one vertex per fan where fans touch at a vertex.
-  const VertexSplit fans = split_nonmanifold_vertices(mesh);
+  // The surface the input describes: each face once, and one vertex per fan where fans touch
+  // at a vertex.
+  const FaceCleanup clean = drop_duplicate_faces(mesh);
+  const VertexSplit fans = split_nonmanifold_vertices(clean.mesh);
   const ComponentSplit split = split_components(fans.mesh);
   std::vector<ComponentTopology> topology;
   double total_area = 0;
@@ -165,6 +167,8 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   SurfaceRemeshResult out;
   out.area = total_area;
   out.vertices_split = fans.split;
+  out.duplicate_faces_removed = clean.duplicate_faces;
+  out.repeated_vertex_faces_removed = clean.repeated_vertex_faces;
   out.vertex_label.assign(mesh.num_vertices(), kInvalidIndex);
 
   // What each component gets: kept as it is for a reason known before any CVT, or remeshed.
@@ -251,7 +255,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
       rep.reason = std::move(reason);
       rep.output_vertices = input.num_vertices();
       rep.output_faces = input.num_faces();
-      kept.push_back(input_faces(mesh, split.face_ids[ci]));
+      kept.push_back(input_faces(clean.mesh, split.face_ids[ci]));
     };
     if (!planned[ci]) {
       keep(rep.outcome, rep.reason);

@@ -41,6 +41,17 @@ ComponentTopology component_topology(const TriangleMesh& component);
 // exists.
 std::int64_t orient_consistently(TriangleMesh& mesh);
 
+// Faces that are no part of the surface an input describes: a face on the same three vertices
+// as an earlier one (either orientation: a soup's doubled or tripled faces, each doubling an
+// edge into a non-manifold one) and a face that repeats a vertex. The rest keep their order
+// and the vertices are untouched; face_source maps every face of the result to its input face.
+struct FaceCleanup {
+  TriangleMesh mesh;
+  std::vector<Index> face_source;
+  std::size_t duplicate_faces = 0, repeated_vertex_faces = 0;   // removed
+};
+FaceCleanup drop_duplicate_faces(const TriangleMesh& mesh);
+
 // A vertex where two or more fans of faces meet (two cones touching at their tips, two
 // boundary loops through one vertex) is one vertex per fan on the surface it describes: each
 // fan gets its own copy (at the same position), so the mesh becomes manifold there. Vertices

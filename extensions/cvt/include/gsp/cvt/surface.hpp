@@ -1,6 +1,7 @@
 #pragma once
 // Remeshing a whole input, whatever it is: every connected component on its own (after the
-// caller's welding, and after splitting vertices where fans of faces only touch, which
+// caller's welding, after leaving out doubled faces and faces with a repeated vertex,
+// drop_duplicate_faces, and after splitting vertices where fans of faces only touch, which
 // makes such a component the manifold surface it describes: split_nonmanifold_vertices),
 // with a share of the vertex budget proportional to its area. What cannot
 // be remeshed as a surface is kept as it is and reported, per component, with the reason:
@@ -88,6 +89,9 @@ struct SurfaceRemeshResult {
   std::vector<double> energy_curve;
   double area = 0;                         // of the whole input
   std::size_t vertices_split = 0;          // input vertices where fans only touched (split_nonmanifold_vertices)
+  // Input faces left out (drop_duplicate_faces): on the same three vertices as an earlier
+  // face, or with a vertex repeated.
+  std::size_t duplicate_faces_removed = 0, repeated_vertex_faces_removed = 0;
   CvtStats cvt_stats;                      // summed (iterations: the largest; converged: all)
   RemeshStats remesh_stats;                // summed
   double remesh_seconds = 0;               // the duals and their post-passes
