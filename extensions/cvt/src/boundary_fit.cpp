@@ -87,8 +87,9 @@ std::size_t split_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, 
         double sa = 0, sb = 0, da = 0, db = 0;
         const double len = distance(m.positions[a], m.positions[b]);
         if (!curves.project(m.positions[a], la, sa, da) || !curves.project(m.positions[b], lb, sb, db) || la != lb ||
-            da > 1e-3 * len || db > 1e-3 * len)
+            !(da < len) || !(db < len))
           continue;
+        const bool dent = da > 1e-3 * len || db > 1e-3 * len;   // an end the snaps left inside
         const BoundaryCurves::Loop& loop = curves.loops[la];
         const double span = curves.wrap(la, sb - sa);
         if (span > 0.5 * loop.length) continue;   // not in the curve's order
@@ -108,7 +109,7 @@ std::size_t split_boundary_edges(TriangleMesh& m, const BoundaryCurves& curves, 
         if (worst <= max_chord) continue;
         const Vec3 n0 = cross(pb - pa, pc - pa), n1 = cross(split - pa, pc - pa), n2 = cross(pb - split, pc - split);
         if (dot(n0, n1) <= 0 || dot(n0, n2) <= 0) continue;
-        const double need = std::min(min_angle(pa, pb, pc), floor_angle);
+        const double need = std::min(min_angle(pa, pb, pc), dent ? kDentFloorDeg * kPi / 180.0 : floor_angle);
         if (std::min(min_angle(pa, split, pc), min_angle(split, pb, pc)) < need) continue;
         const Index mid = Index(m.positions.size());
         m.positions.push_back(split);

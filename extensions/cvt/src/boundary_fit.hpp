@@ -24,8 +24,11 @@ std::size_t snap_boundary_vertices(TriangleMesh& mesh, const BoundaryCurves& cur
 // appended; its triangle becomes two), when both new triangles keep the old one's orientation
 // and have a smallest angle of at least min(the old triangle's, `min_angle_deg`). Sites on a
 // jagged boundary (a scan's hole) are an edge apart and the chords between them cut the
-// corners of the outline: that is where the bunny's Hausdorff distance was. Returns the number
-// of splits.
+// corners of the outline: that is where the bunny's Hausdorff distance was. An edge with an end
+// the snaps left inside the surface (less than the edge's length from the curve: a dent in the
+// dual's boundary) is split too, with a floor of min(the old triangle's, kDentFloorDeg) since the
+// moves after it take the angles back up. Returns the number of splits.
+inline constexpr double kDentFloorDeg = 20.0;   // issue 22's quality floor
 std::size_t split_boundary_edges(TriangleMesh& mesh, const BoundaryCurves& curves, double max_chord, double min_angle_deg,
                                  int passes = 3, const std::vector<bool>* locked = nullptr);
 
