@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 namespace gsp {
 namespace {
@@ -134,16 +135,29 @@ TopologyReport analyze_topology(const TriangleMesh& mesh, const Connectivity& co
     else if (triangle_area(mesh, t) <= threshold) ++r.zero_area_faces;
   }
 
-  // Duplicates: sort faces by their sorted vertex triple; every face equal to its predecessor
-  // repeats an earlier one.
-  std::vector<Triangle> keys(mesh.triangles);
-  for (Triangle& t : keys) std::sort(t.begin(), t.end());
-  std::sort(keys.begin(), keys.end());
-  for (std::size_t i = 1; i < keys.size(); ++i) r.duplicate_faces += (keys[i] == keys[i - 1]);
+  const std::vector<bool> duplicate = duplicate_faces(mesh);
+  r.duplicate_faces = std::size_t(std::count(duplicate.begin(), duplicate.end(), true));
 
   r.euler_characteristic = static_cast<std::int64_t>(referenced) - static_cast<std::int64_t>(r.edges) +
                            static_cast<std::int64_t>(nf);
   return r;
+}
+
+std::vector<bool> duplicate_faces(const TriangleMesh& mesh) {
+  // Faces sorted by their sorted vertex triple, then by index: a face equal to its predecessor
+  // repeats an earlier one.
+  std::vector<std::pair<Triangle, Index>> keys;
+  keys.reserve(mesh.num_faces());
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    Triangle k = mesh.triangles[f];
+    std::sort(k.begin(), k.end());
+    keys.push_back({k, Index(f)});
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> out(mesh.num_faces(), false);
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].first == keys[i - 1].first) out[keys[i].second] = true;
+  return out;
 }
 
 std::vector<bool> degenerate_faces(const TriangleMesh& mesh) {

@@ -2,7 +2,6 @@
 #include <gsp/cvt/components.hpp>
 
 #include <algorithm>
-#include <array>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -129,31 +128,18 @@ ComponentTopology component_topology(const TriangleMesh& component) {
 FaceCleanup drop_duplicate_faces(const TriangleMesh& mesh) {
   FaceCleanup out;
   out.mesh.positions = mesh.positions;
-  // Each face's vertex set, sorted: equal keys are the same three vertices.
-  std::vector<std::pair<std::array<Index, 3>, Index>> keys;
-  keys.reserve(mesh.num_faces());
+  const std::vector<bool> duplicate = duplicate_faces(mesh);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    std::array<Index, 3> k = mesh.triangles[f];
-    std::sort(k.begin(), k.end());
-    keys.push_back({k, Index(f)});
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<char> drop(mesh.num_faces(), 0);
-  for (std::size_t i = 0; i < keys.size(); ++i) {
-    const std::array<Index, 3>& k = keys[i].first;
-    if (k[0] == k[1] || k[1] == k[2]) {
-      drop[keys[i].second] = 1;
+    const Triangle& t = mesh.triangles[f];
+    if (repeats_vertex(t)) {
       ++out.repeated_vertex_faces;
-    } else if (i > 0 && k == keys[i - 1].first) {
-      drop[keys[i].second] = 1;   // the first in input order is kept (equal keys sort by face)
+    } else if (duplicate[f]) {
       ++out.duplicate_faces;
-    }
-  }
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-    if (!drop[f]) {
-      out.mesh.triangles.push_back(mesh.triangles[f]);
+    } else {
+      out.mesh.triangles.push_back(t);
       out.face_source.push_back(Index(f));
     }
+  }
   return out;
 }
 

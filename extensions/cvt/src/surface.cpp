@@ -1,9 +1,9 @@
 #include "component_budget.hpp"
 #include "component_remesh.hpp"
+#include "triangle_geometry.hpp"
 
 #include <gsp/batch.hpp>
 #include <gsp/cvt/components.hpp>
-#include <gsp/cvt/quality.hpp>
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
 
@@ -109,6 +109,8 @@ std::size_t component_sites(const CvtOptions& o, double area, double total_area)
 // larger.
 constexpr double kSmallComponentAngle = 20.0;
 
+double min_angle_deg(const TriangleMesh& m) { return detail::mesh_min_angle(m) * 180.0 / M_PI; }
+
 std::string degrees(double a) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g deg", a);
@@ -197,8 +199,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
       candidates.push_back(ci);
       const std::size_t share = component_sites(co, rep.area, total_area);
       const bool tiny = share < options.min_component_sites && rep.input_vertices < options.min_component_sites;
-      items.push_back({share, rep.input_vertices, rep.area,
-                       tiny && measure_mesh_quality(split.meshes[ci]).min_angle >= kSmallComponentAngle});
+      items.push_back({share, rep.input_vertices, rep.area, tiny && min_angle_deg(split.meshes[ci]) >= kSmallComponentAngle});
     }
   }
   const std::vector<std::size_t> sites = detail::plan_component_sites(
@@ -268,8 +269,8 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
         keep(ComponentOutcome::kept_topology,
              "the remesh had " + r.why +
                  (rep.retries ? " (and " + std::to_string(rep.retries) + " more from other initial sites)" : ""));
-      } else if (raised[ci] && (remeshed_angle = measure_mesh_quality(r.mesh).min_angle) < kSmallComponentAngle &&
-                 remeshed_angle < (input_angle = measure_mesh_quality(input).min_angle)) {
+      } else if (raised[ci] && (remeshed_angle = min_angle_deg(r.mesh)) < kSmallComponentAngle &&
+                 remeshed_angle < (input_angle = min_angle_deg(input))) {
         // Raised above its share, a small component's remesh is kept where its angles are
         // good (fewer vertices than the input's) or at least better than the input's.
         keep(ComponentOutcome::kept_small, "its share of the budget is below " +

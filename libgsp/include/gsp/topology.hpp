@@ -31,4 +31,8 @@ TopologyReport analyze_topology(const TriangleMesh& mesh, const Connectivity& co
 // Per-face flag: true when the face cannot carry geometry (repeated index or zero area).
 std::vector<bool> degenerate_faces(const TriangleMesh& mesh);
 
+// Per-face flag: true when an earlier face (in input order) has the same three vertex indices,
+// in any order or orientation (what TopologyReport::duplicate_faces counts).
+std::vector<bool> duplicate_faces(const TriangleMesh& mesh);
+
 }  // namespace gsp
