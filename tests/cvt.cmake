@@ -22,3 +22,5 @@ gsp_test(cvt_component_budget_test SOURCES cvt_component_budget_test.cpp DEPS gs
 target_include_directories(cvt_component_budget_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
 gsp_test(cvt_boundary_fit_test SOURCES cvt_boundary_fit_test.cpp DEPS gsp::cvt)
 target_include_directories(cvt_boundary_fit_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
+gsp_test(cvt_triangle_geometry_test SOURCES cvt_triangle_geometry_test.cpp DEPS gsp::cvt)
+target_include_directories(cvt_triangle_geometry_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)

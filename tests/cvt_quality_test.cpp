@@ -14,8 +14,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
+#include <vector>
 
 namespace {
 
@@ -150,6 +152,62 @@ TEST(CvtClosestPoint, TiesGoToTheLowestFace) {
     const ClosestPoint c = index.closest(p);
     EXPECT_EQ(c.point.element, lowest) << "vertex " << v;
     EXPECT_DOUBLE_EQ(c.distance, 0.25);
+  }
+}
+
+// A hint (a face to start the search from) changes how fast, never what: closest(p, hint) is
+// closest(p) to the last bit, whatever face the hint names, near or far; within(p, r, hint)
+// is within(p, r), and a hint it returns is a face within r.
+TEST(CvtClosestPoint, HintsChangeNothing) {
+  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const cvt::ClosestPointIndex index(m);
+  sampling::Random random(11);
+  const BoundingBox box = bounding_box(m);
+  const Vec3 lo = box.min, hi = box.max;
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
+                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const ClosestPoint plain = index.closest(p);
+    const Index far = Index(random.uniform() * double(m.num_faces())) % Index(m.num_faces());
+    // The answer itself and the face after it in the file (mostly a neighbour): the hints a
+    // search of nearby points passes.
+    const Index f = plain.point.element;
+    const Index next = f + 1 < m.num_faces() ? f + 1 : f - 1;
+    for (Index hint : {far, f, next}) {
+      const ClosestPoint h = index.closest(p, hint);
+      EXPECT_EQ(h.point.element, f) << "point " << i << " hint " << hint;
+      EXPECT_EQ(h.distance, plain.distance) << "point " << i << " hint " << hint;
+    }
+    for (double r : {plain.distance, 0.5 * plain.distance, 2 * plain.distance}) {
+      Index hint = far;
+      const bool found = index.within(p, r, hint);
+      EXPECT_EQ(found, index.within(p, r)) << "point " << i << " r " << r;
+      if (found) {
+        const Triangle& t = m.triangles[hint];
+        const std::array<double, 3> w = closest_point_on_triangle(p, m.positions[t[0]], m.positions[t[1]], m.positions[t[2]]);
+        EXPECT_LE(distance(p, w[0] * m.positions[t[0]] + w[1] * m.positions[t[1]] + w[2] * m.positions[t[2]]), r);
+      }
+    }
+  }
+}
+
+// Ties with a hint: a point at distance 0 from several faces (a grid vertex, on the surface:
+// the float boxes' rounding matters most there) gets the lowest of them whichever of them the
+// search starts from.
+TEST(CvtClosestPoint, TiesGoToTheLowestFaceFromAnyHint) {
+  const TriangleMesh m = test::square_grid(8);
+  const cvt::ClosestPointIndex index(m);
+  for (Index v = 0; v < m.num_vertices(); ++v) {
+    std::vector<Index> around;
+    for (Index f = 0; f < m.num_faces(); ++f)
+      for (Index k : m.triangles[f])
+        if (k == v) around.push_back(f);
+    for (double lift : {0.0, 0.25})
+      for (Index hint : around) {
+        const ClosestPoint c = index.closest(m.positions[v] + Vec3{0, 0, lift}, hint);
+        EXPECT_EQ(c.point.element, around.front()) << "vertex " << v << " hint " << hint;
+        EXPECT_DOUBLE_EQ(c.distance, lift);
+      }
   }
 }
 

@@ -33,24 +33,35 @@ struct Query {
   const std::vector<Index>* faces;
   Vec3 p;
   ClosestPoint best;
+  double slack;
 };
+
+// Where on face f the closest point to p lies, and how far.
+ClosestPoint on_face(const TriangleMesh& mesh, Index f, Vec3 p) {
+  const Triangle& t = mesh.triangles[f];
+  const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+  const std::array<double, 3> w = closest_point_on_triangle(p, a, b, c);
+  ClosestPoint r;
+  r.point = SurfacePoint::in_face(f, w);
+  r.position = w[0] * a + w[1] * b + w[2] * c;
+  r.distance = distance(r.position, p);
+  return r;
+}
+
+// The search radius that keeps every face within distance d: Embree culls by float boxes
+// around float positions, so d is widened by their rounding (the callbacks decide in double).
+float search_radius(double d, double slack) { return float(d * (1 + 1e-5) + slack) + 1e-30f; }
 
 bool query_triangle(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<Query*>(args->userPtr);
   const Index f = (*q->faces)[args->primID];
-  const Triangle& t = q->mesh->triangles[f];
-  const Vec3 a = q->mesh->positions[t[0]], b = q->mesh->positions[t[1]], c = q->mesh->positions[t[2]];
-  const std::array<double, 3> w = closest_point_on_triangle(q->p, a, b, c);
-  const Vec3 x = w[0] * a + w[1] * b + w[2] * c;
-  const double d = distance(x, q->p);
+  const ClosestPoint r = on_face(*q->mesh, f, q->p);
   // Ties (a point on an edge is as near to both faces) go to the lower face index, so the
-  // answer does not depend on the order in which the BVH, built in parallel, is walked.
-  if (d > q->best.distance || (d == q->best.distance && f >= q->best.point.element)) return false;
-  q->best.point = SurfacePoint::in_face(f, w);
-  q->best.position = x;
-  q->best.distance = d;
-  // Shrink the search, with a margin for the float boxes.
-  args->query->radius = float(d * (1 + 1e-5)) + 1e-30f;
+  // answer does not depend on the order in which the BVH, built in parallel, is walked (nor
+  // on the hint the search started from): the radius keeps the tied faces' boxes in reach.
+  if (r.distance > q->best.distance || (r.distance == q->best.distance && f >= q->best.point.element)) return false;
+  q->best = r;
+  args->query->radius = search_radius(r.distance, q->slack);
   return true;
 }
 
@@ -60,16 +71,16 @@ struct WithinQuery {
   Vec3 p;
   double r;
   bool found;
+  Index face;   // the one found
 };
 
 bool query_within(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<WithinQuery*>(args->userPtr);
   if (q->found) return false;
-  const Triangle& t = q->mesh->triangles[(*q->faces)[args->primID]];
-  const Vec3 a = q->mesh->positions[t[0]], b = q->mesh->positions[t[1]], c = q->mesh->positions[t[2]];
-  const std::array<double, 3> w = closest_point_on_triangle(q->p, a, b, c);
-  if (!(distance(w[0] * a + w[1] * b + w[2] * c, q->p) <= q->r)) return false;
+  const Index f = (*q->faces)[args->primID];
+  if (!(on_face(*q->mesh, f, q->p).distance <= q->r)) return false;
   q->found = true;
+  q->face = f;
   args->query->radius = 0;   // nothing more to look at
   return true;
 }
@@ -114,15 +125,21 @@ ClosestPointIndex::ClosestPointIndex(const TriangleMesh& mesh) : impl_(std::make
 
 ClosestPointIndex::~ClosestPointIndex() = default;
 
-ClosestPoint ClosestPointIndex::closest(Vec3 p) const {
+ClosestPoint ClosestPointIndex::closest(Vec3 p) const { return closest(p, kInvalidIndex); }
+
+ClosestPoint ClosestPointIndex::closest(Vec3 p, Index hint) const {
   const Impl& s = *impl_;
-  Query q{this, &s.mesh, &s.faces, p, {}};
+  Query q{this, &s.mesh, &s.faces, p, {}, s.slack};
   q.best.distance = std::numeric_limits<double>::infinity();
   const Vec3 local = p - s.origin;
   RTCPointQuery pq;
   pq.x = float(local.x), pq.y = float(local.y), pq.z = float(local.z);
   pq.time = 0;
   pq.radius = std::numeric_limits<float>::infinity();
+  if (hint != kInvalidIndex) {
+    q.best = on_face(s.mesh, hint, p);
+    pq.radius = search_radius(q.best.distance, s.slack);
+  }
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   // The callback reads positions in model units; Embree's boxes are in the shifted frame, and
@@ -132,19 +149,24 @@ ClosestPoint ClosestPointIndex::closest(Vec3 p) const {
 }
 
 bool ClosestPointIndex::within(Vec3 p, double r) const {
+  Index hint = kInvalidIndex;
+  return within(p, r, hint);
+}
+
+bool ClosestPointIndex::within(Vec3 p, double r, Index& hint) const {
   const Impl& s = *impl_;
   if (!(r >= 0)) return false;
-  WithinQuery q{&s.mesh, &s.faces, p, r, false};
+  if (hint != kInvalidIndex && on_face(s.mesh, hint, p).distance <= r) return true;
+  WithinQuery q{&s.mesh, &s.faces, p, r, false, kInvalidIndex};
   const Vec3 local = p - s.origin;
   RTCPointQuery pq;
   pq.x = float(local.x), pq.y = float(local.y), pq.z = float(local.z);
   pq.time = 0;
-  // Embree culls by float boxes around float positions: the radius is widened by their
-  // rounding, and the distance itself is decided in double by the callback.
-  pq.radius = float(r * (1 + 1e-5) + s.slack) + 1e-30f;
+  pq.radius = search_radius(r, s.slack);
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(s.scene, &pq, &context, query_within, &q);
+  if (q.found) hint = q.face;
   return q.found;
 }
 

@@ -32,16 +32,25 @@ bool all_chord_points(const SmoothingContext& c, Index v, Vec3 x, Fn&& fn) {
 // The largest distance of those points to the surface: the figure a move may not exceed.
 double deviation(const SmoothingContext& c, Index v, Vec3 x) {
   double worst = 0;
+  Index near = kInvalidIndex;   // the last point's face: the next point lies a triangle away
   all_chord_points(c, v, x, [&](Vec3 s) {
-    worst = std::max(worst, c.index.closest(s).distance);
+    const ClosestPoint sp = c.index.closest(s, near);
+    near = sp.point.element;
+    worst = std::max(worst, sp.distance);
     return true;
   });
   return worst;
 }
 
-// Whether deviation(c, v, x) <= limit, without measuring each point's distance.
-bool close_to_surface(const SmoothingContext& c, Index v, Vec3 x, double limit) {
-  return all_chord_points(c, v, x, [&](Vec3 s) { return c.index.within(s, limit); });
+// Whether deviation(c, v, x) <= limit, without measuring each point's distance. hint[i]: the
+// surface face that kept chord point i last time (the candidates of one search lie close
+// together, so it mostly keeps it again and the BVH is not asked).
+bool close_to_surface(const SmoothingContext& c, Index v, Vec3 x, double limit, std::vector<Index>& hint) {
+  std::size_t i = 0;
+  return all_chord_points(c, v, x, [&](Vec3 s) {
+    if (i == hint.size()) hint.push_back(kInvalidIndex);
+    return c.index.within(s, limit, hint[i++]);
+  });
 }
 
 // The triangles around v's neighbours that are not v's, each once, with a sphere around each:
@@ -106,6 +115,7 @@ void watched_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal, do
   std::vector<std::array<Vec3, 2>> ring;   // the far edge of each of v's triangles
   std::vector<Vec3> under{x0};
   double reach = 0;
+  Index near = kInvalidIndex;   // the last point's face (as in deviation())
   for (Index h : c.rings.around(v)) {
     const Triangle& t = c.m.triangles[face_of(h)];
     const Index k = corner_of(h);
@@ -113,7 +123,8 @@ void watched_points(const SmoothingContext& c, Index v, Vec3 x0, Vec3 normal, do
     ring.push_back({b, e});
     reach = std::max(reach, distance(x0, b));
     for (Vec3 z : {0.5 * (x0 + b), (x0 + b + e) * (1.0 / 3)}) {
-      const ClosestPoint sp = c.index.closest(z);
+      const ClosestPoint sp = c.index.closest(z, near);
+      near = sp.point.element;
       if (sp.point.element != kInvalidIndex) under.push_back(sp.position);
     }
   }
@@ -208,7 +219,7 @@ double ring_distance(const SmoothingContext& c, Index v, Vec3 z, Vec3 y) {
 
 bool SurfaceGuard::keeps(Vec3 y) {
   if (!has_deviation_) deviation0_ = deviation(c_, v_, x0_), has_deviation_ = true;
-  if (!close_to_surface(c_, v_, y, std::max(deviation0_, bound_))) return false;
+  if (!close_to_surface(c_, v_, y, std::max(deviation0_, bound_), chord_hint_)) return false;
   if (!has_watched_) {
     watched_points(c_, v_, x0_, normal_, bound_, watched_, watched_before_);
     hint_.assign(watched_.size(), 0);

@@ -50,6 +50,7 @@ class SurfaceGuard {
   std::vector<Vec3> watched_;
   std::vector<double> watched_before_;
   std::vector<Index> hint_;   // per watched point, the ring slot that kept it last time
+  std::vector<Index> chord_hint_;   // per chord point, the surface face that kept it last time
 };
 
 }  // namespace gsp::cvt::detail

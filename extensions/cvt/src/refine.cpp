@@ -277,6 +277,26 @@ void FarPointInserter::commit(int round) {
   em_.begin();
 }
 
+// The vertices within `rings` rings of the flagged ones (flagged included).
+std::vector<bool> grow_by_rings(const TriangleMesh& m, std::vector<bool> flag, int rings) {
+  flag.resize(m.num_vertices(), false);
+  for (int k = 0; k < rings; ++k) {
+    std::vector<bool> grown = flag;
+    for (const Triangle& t : m.triangles)
+      if (flag[t[0]] || flag[t[1]] || flag[t[2]])
+        for (Index v : t) grown[v] = true;
+    flag.swap(grown);
+  }
+  return flag;
+}
+
+// An attempt's moves reach this many rings around the insertions: the floor is checked within
+// one ring of the new vertices. Unbounded, they spread over the whole component in every
+// attempt (up to three per component: half of gsp-cvt's time on CAD parts), where one pass
+// over the mesh after the last attempt does the same work once (docs/cvt.md, "Settling the
+// insertions").
+constexpr int kSettleRings = 2;
+
 }  // namespace
 
 RefineResult insert_at_far_points(TriangleMesh& m, const TriangleMesh& surface, const RefineParams& p) {
@@ -302,6 +322,8 @@ SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surf
     again.cap_flips = false;
     again.pull_distance = 0;
     again.only = &added.touched;
+    const std::vector<bool> movable = grow_by_rings(mesh, added.touched, kSettleRings);
+    again.movable = &movable;
     const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, again);
     // New vertices with a triangle below the floor within one ring.
     const std::size_t first = before.num_vertices();
@@ -324,6 +346,18 @@ SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surf
     out.moves = c.moves;
     out.boundary_moves = c.boundary_moves;
     break;
+  }
+  // Then one pass of moves over the whole mesh: the pulls before the insertions left vertices
+  // that the moves can raise again, which the moves of every attempt used to reach by
+  // spreading out from the insertions (docs/cvt.md, "Settling the insertions").
+  if (out.inserted > 0) {
+    SmoothParams last = smooth;
+    last.cap_flips = false;
+    last.pull_distance = 0;
+    const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, last);
+    out.flips += c.flips;
+    out.moves += c.moves;
+    out.boundary_moves += c.boundary_moves;
   }
   return out;
 }

@@ -52,11 +52,12 @@ struct SettledRefinement {
   std::size_t inserted = 0, flips = 0, moves = 0, boundary_moves = 0;
 };
 
-// insert_at_far_points with 10 degrees of slack, then the vertex moves around the new vertices
-// (`smooth` without cap flips or pulls, same surface checks, so they do not give the distance
-// back) to win the slack back. Where a new vertex still has a triangle below the floor within
-// one ring, the mesh is put back and the insertions made again without those points (twice at
-// most), the last time without slack: the floor always holds.
+// insert_at_far_points with 10 degrees of slack, then the vertex moves within two rings of the
+// new vertices (`smooth` without cap flips or pulls, same surface checks, so they do not give
+// the distance back) to win the slack back. Where a new vertex still has a triangle below the
+// floor within one ring, the mesh is put back and the insertions made again without those
+// points (twice at most), the last time without slack: the floor always holds. Last, one
+// pass of the same moves over every vertex.
 SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surface, const BoundaryCurves& curves,
                                     const SmoothParams& smooth, RefineParams params);
 

@@ -26,6 +26,7 @@ std::size_t move_pass(SmoothingContext& c, const SmoothParams& p, std::vector<bo
   std::size_t moved = 0;
   for (Index v = 0; v < c.m.num_vertices(); ++v) {
     if (c.rings.empty(v) || !dirty[v] || is_locked(c.locked, v)) continue;
+    if (p.movable && (v >= p.movable->size() || !(*p.movable)[v])) continue;
     dirty[v] = false;
     Move move;
     if (!find_move(c, v, below, p.max_deviation, move)) continue;

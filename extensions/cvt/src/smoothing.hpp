@@ -28,6 +28,9 @@ struct SmoothParams {
   bool cap_flips = true;
   const std::vector<bool>* only = nullptr;
   const std::vector<bool>* locked = nullptr;   // never moved, their edges never flipped (locked_vertices.hpp)
+  // The vertices that may move at all (nullptr: all): refine.hpp's moves after its insertions
+  // keep to the insertions' neighbourhoods.
+  const std::vector<bool>* movable = nullptr;
   // An index over `surface` built by the caller (nullptr: built here; the working mesh's takes
   // a few tenths of a second).
   const ClosestPointIndex* surface_index = nullptr;

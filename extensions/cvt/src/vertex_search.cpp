@@ -67,6 +67,7 @@ class MoveSearch {
   SurfaceGuard guard_;
   std::size_t l_ = 0;   // v's boundary loop
   double back_ = 0, ahead_ = 0;   // arc lengths to the previous and the next boundary vertex
+  Index face_ = kInvalidIndex;    // the surface face of the last candidate: where the next one's search starts
 };
 
 // The chords to the boundary neighbours must stay as close to the boundary curve as the
@@ -87,7 +88,9 @@ bool MoveSearch::try_arc(double offset) {
   if (offset <= -0.9 * back_ || offset >= 0.9 * ahead_) return false;
   const double s = c_.curves.wrap(l_, c_.arc[v_] + offset);
   const Vec3 y = c_.curves.at(l_, s);
-  const double q = signed_quality(c_, v_, y, true, c_.surface_normal(c_.index.closest(y)));
+  const ClosestPoint sp = c_.index.closest(y, face_);
+  face_ = sp.point.element;
+  const double q = signed_quality(c_, v_, y, true, c_.surface_normal(sp));
   if (q <= best + 1e-9 || !chords_stay_close(s) || !guard_.keeps(y)) return false;
   best = q, x = y, sx = s;
   return true;
@@ -121,7 +124,8 @@ bool MoveSearch::slide_along_boundary() {
 // Candidates are projected onto the surface; a projection onto another sheet (across a slit or
 // a thin wall) or too far from the target would take v off its own sheet.
 bool MoveSearch::try_point(Vec3 target) {
-  const ClosestPoint sp = c_.index.closest(target);
+  const ClosestPoint sp = c_.index.closest(target, face_);
+  face_ = sp.point.element;
   if (sp.point.element == kInvalidIndex || sp.distance > 0.5 * frame_.h) return false;
   const Triangle& st = c_.surface.triangles[sp.point.element];
   const Vec3 sn = normal(c_.surface.positions[st[0]], c_.surface.positions[st[1]], c_.surface.positions[st[2]]);

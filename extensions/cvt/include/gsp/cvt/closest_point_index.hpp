@@ -19,9 +19,16 @@ class ClosestPointIndex {
   ClosestPointIndex& operator=(const ClosestPointIndex&) = delete;
 
   ClosestPoint closest(Vec3 p) const;
+  // The same answer, found faster when face `hint` (a face of the mesh, or kInvalidIndex) is
+  // near p: the search starts bounded by the hint's distance instead of unbounded. Searches
+  // of points close together (a vertex's candidate positions) pass the last answer's face.
+  ClosestPoint closest(Vec3 p, Index hint) const;
   // Whether a triangle lies within distance r of p (closest(p).distance <= r, decided in the
   // same double precision), found faster: the search is bounded by r and stops at the first.
   bool within(Vec3 p, double r) const;
+  // The same, trying face `hint` first (kInvalidIndex: none); `hint` gets the face that was
+  // found within r, so a caller asking again about a nearby point asks that face first.
+  bool within(Vec3 p, double r, Index& hint) const;
 
  private:
   struct Impl;
