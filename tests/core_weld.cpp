@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "helpers/mesh_builders.hpp"
 
@@ -65,6 +67,42 @@ TEST(CoreWeld, ExactWeldKeepsNearlyEqualPointsApart) {
   const WeldResult w = weld_vertices(m);
   EXPECT_EQ(w.vertex_map, (std::vector<Index>{0, 1, 0}));
   EXPECT_EQ(w.merged, 1u);
+}
+
+// The apps' weld (weld_input without a tolerance): identical positions and rounding noise.
+// A CAD export writes +-3.5e-15 where 0 was meant; the exploded sphere, with such noise on
+// the second copy of every corner, welds back to the sphere; vertices 1e-7 of the diagonal
+// apart (the closest distinct ones on the corpus) stay apart.
+TEST(CoreWeld, DenoisedWeldMergesRoundingNoiseOnly) {
+  const TriangleMesh sphere = test::icosphere(2);
+  TriangleMesh soup = test::explode(sphere);
+  const BoundingBox box = bounding_box(soup);
+  const double diagonal = distance(box.min, box.max);
+  ASSERT_GT(diagonal, 1.0);
+  std::vector<int> seen(sphere.num_vertices(), 0);
+  for (std::size_t f = 0; f < sphere.num_faces(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      Vec3& p = soup.positions[soup.triangles[f][c]];
+      if (seen[sphere.triangles[f][c]]++ % 2 == 1) p = p + Vec3{3.5e-15, -3.5e-15, 1e-14};
+    }
+  EXPECT_LT(weld_vertices(soup).mesh.num_vertices(), soup.num_vertices());   // the exact weld leaves cracks
+  EXPECT_GT(report(weld_vertices(soup).mesh).boundary_loops, 0u);
+  const WeldResult w = weld_vertices_denoised(soup);
+  EXPECT_EQ(w.mesh.num_vertices(), sphere.num_vertices());
+  EXPECT_TRUE(report(w.mesh).is_closed());
+  EXPECT_EQ(report(w.mesh).euler_characteristic, 2);
+  const WeldResult same = weld_input(soup, 0.0);
+  EXPECT_EQ(same.vertex_map, w.vertex_map);
+
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 1, 1}, {3.5e-15, 0, -0.0}, {1 + 1e-7 * std::sqrt(3.0), 1, 1}, {1, 1, 1}};
+  EXPECT_EQ(weld_vertices_denoised(m).vertex_map, (std::vector<Index>{0, 1, 0, 2, 1}));
+  // A tolerance given is the tolerant weld, whatever the noise.
+  EXPECT_EQ(weld_input(m, 0.5).vertex_map, weld_vertices(m, 0.5).vertex_map);
+  // No extent to take a step from: the exact weld.
+  TriangleMesh point;
+  point.positions = {{2, 2, 2}, {2, 2, 2}};
+  EXPECT_EQ(weld_vertices_denoised(point).vertex_map, (std::vector<Index>{0, 0}));
 }
 
 TEST(CoreWeld, ToleranceMergesCloseNeighboursAcrossCells) {

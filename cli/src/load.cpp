@@ -24,7 +24,7 @@ void add_load_options(CLI::App& app, LoadOptions& options) {
       "--no-weld", [set_mode] { set_mode(WeldMode::never); },
       "Use the file's vertices as stored, even for STL and glTF/GLB");
   app.add_option("--weld-tolerance", options.weld_tolerance,
-                 "Merge vertices closer than T (model units) when welding; 0 = identical positions only")
+                 "Merge vertices closer than T (model units) when welding; 0 = identical positions and rounding noise (1e-10 of the bounding box's diagonal)")
       ->type_name("T")
       ->check(CLI::Validator(
           [](std::string& text) -> std::string {
@@ -76,7 +76,7 @@ io::ReadResult read_checked(const std::string& path, const LoadOptions& options)
 }
 
 void weld_into(LoadedMesh& out, const LoadOptions& options) {
-  WeldResult w = weld_vertices(out.mesh, options.weld_tolerance);
+  WeldResult w = weld_input(out.mesh, options.weld_tolerance);
   out.raw = std::move(out.mesh);
   out.mesh = std::move(w.mesh);
   out.vertex_map = std::move(w.vertex_map);

@@ -54,14 +54,25 @@ class KeyTable {
   std::vector<Index> values_;
 };
 
-// vertex_map[i] = representative input vertex of i (the lowest index of its group).
-std::vector<Index> representatives_exact(const TriangleMesh& mesh) {
+// The step a coordinate is rounded to (step > 0): its index, clamped like cell_coordinate.
+std::uint64_t rounded_coordinate(double x, double inv_step) {
+  constexpr double kLimit = 4.0e18;
+  const double c = std::clamp(std::floor(x * inv_step + 0.5), -kLimit, kLimit);
+  return static_cast<std::uint64_t>(static_cast<std::int64_t>(c));
+}
+
+// vertex_map[i] = representative input vertex of i (the lowest index of its group): equal
+// bit patterns, or with step > 0 equal coordinates rounded to multiples of step.
+std::vector<Index> representatives_exact(const TriangleMesh& mesh, double step = 0.0) {
   const std::size_t n = mesh.num_vertices();
   std::vector<Index> rep(n);
   KeyTable table(n);
+  const double inv_step = step > 0 ? 1.0 / step : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 p = mesh.positions[i];
-    const KeyTable::Key key{coordinate_bits(p.x), coordinate_bits(p.y), coordinate_bits(p.z)};
+    const KeyTable::Key key = step > 0 ? KeyTable::Key{rounded_coordinate(p.x, inv_step), rounded_coordinate(p.y, inv_step),
+                                                       rounded_coordinate(p.z, inv_step)}
+                                       : KeyTable::Key{coordinate_bits(p.x), coordinate_bits(p.y), coordinate_bits(p.z)};
     const std::size_t s = table.slot(key);
     if (table.value(s) == kInvalidIndex) table.set(s, key, static_cast<Index>(i));
     rep[i] = table.value(s);
@@ -116,17 +127,10 @@ std::vector<Index> representatives_tolerant(const TriangleMesh& mesh, double tol
   return rep;
 }
 
-}  // namespace
-
-WeldResult weld_vertices(const TriangleMesh& mesh, double tolerance) {
-  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
-    throw InvalidInput("weld tolerance must be a finite number >= 0");
+// The welded mesh for representatives rep (rep[i] <= i).
+WeldResult weld_with(const TriangleMesh& mesh, const std::vector<Index>& rep) {
   const std::size_t n = mesh.num_vertices();
-  if (n >= kInvalidIndex) throw InvalidInput("mesh has too many vertices for 32-bit indices");
   const bool has_normals = mesh.normals.size() == n && n > 0;
-
-  const std::vector<Index> rep = tolerance == 0.0 ? representatives_exact(mesh)
-                                                  : representatives_tolerant(mesh, tolerance);
 
   // Welded vertices keep the order of their representatives (first appearance in the input).
   WeldResult out;
@@ -151,6 +155,28 @@ WeldResult weld_vertices(const TriangleMesh& mesh, double tolerance) {
       out.mesh.triangles[f][c] = out.vertex_map[v];
     }
   return out;
+}
+
+}  // namespace
+
+WeldResult weld_vertices(const TriangleMesh& mesh, double tolerance) {
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance))
+    throw InvalidInput("weld tolerance must be a finite number >= 0");
+  if (mesh.num_vertices() >= kInvalidIndex) throw InvalidInput("mesh has too many vertices for 32-bit indices");
+  return weld_with(mesh, tolerance == 0.0 ? representatives_exact(mesh) : representatives_tolerant(mesh, tolerance));
+}
+
+WeldResult weld_vertices_denoised(const TriangleMesh& mesh) {
+  if (mesh.num_vertices() >= kInvalidIndex) throw InvalidInput("mesh has too many vertices for 32-bit indices");
+  const BoundingBox box = bounding_box(mesh);
+  const double diagonal = mesh.num_vertices() > 0 ? distance(box.min, box.max) : 0.0;
+  // A box without extent (or without a finite one) has nothing to round: the exact weld.
+  const double step = std::isfinite(diagonal) ? kWeldNoise * diagonal : 0.0;
+  return weld_with(mesh, representatives_exact(mesh, step > 0 ? step : 0.0));
+}
+
+WeldResult weld_input(const TriangleMesh& mesh, double tolerance) {
+  return tolerance > 0 ? weld_vertices(mesh, tolerance) : weld_vertices_denoised(mesh);
 }
 
 }  // namespace gsp

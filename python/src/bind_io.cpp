@@ -89,8 +89,9 @@ void bind_io(py::module_& m) {
 
 V is float64 (n, 3), F int64 (m, 3); polygons are fan-triangulated. weld=None welds the
 formats that split vertices (STL, glTF, GLB) and keeps the others as stored, like the apps;
-True welds whatever the format, False never. weld_tolerance > 0 merges vertices closer than
-that (model units). Raises OSError for a missing, unreadable or malformed file, and for a
+True welds whatever the format, False never. Welding merges identical positions and positions
+within rounding noise (1e-10 of the bounding box's diagonal); weld_tolerance > 0 merges
+vertices closer than that instead (model units). Raises OSError for a missing, unreadable or malformed file, and for a
 file without faces (use read_points).)");
   m.def("read_points", &read_points, py::arg("path"), py::kw_only(), py::arg("normals") = false,
         R"(Read the vertices of any mesh or point-cloud file (.xyz .txt .ply .obj ...) as P, float64 (n, 3).

@@ -39,7 +39,7 @@ const char* kUsage =
     "  --method M                exact (default; CGAL Surface_mesh_shortest_path),\n"
     "                            heat (CGAL heat method), heat-idt (intrinsic Delaunay)\n"
     "  --weld-tolerance T        merge vertices closer than T before computing (default 0:\n"
-    "                            bit-identical positions only)\n"
+    "                            identical positions and rounding noise, as the apps)\n"
     "  --no-weld                 use the vertices as stored\n"
     "  --stats FILE              timings and counts as JSON ('-' for stdout)\n"
     "  --quiet                   no summary on stderr (printed only to a terminal anyway)\n"
@@ -183,7 +183,7 @@ int run(const Options& o) {
   t = Clock::now();
   gsp::WeldResult welded;
   if (o.weld) {
-    welded = gsp::weld_vertices(read.mesh, o.weld_tolerance);
+    welded = gsp::weld_input(read.mesh, o.weld_tolerance);
   } else {
     welded.mesh = std::move(read.mesh);
     welded.vertex_map.resize(welded.mesh.num_vertices());

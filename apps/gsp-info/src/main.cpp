@@ -55,7 +55,7 @@ void run(gsp::cli::Context& ctx, Options& opt) {
   TriangleMesh welded_storage;
   const TriangleMesh* welded = &in.mesh;
   if (r.weld_enabled && !in.welded && !r.point_cloud) {
-    welded_storage = ctx.timer().time("weld", [&] { return weld_vertices(raw, opt.load.weld_tolerance).mesh; });
+    welded_storage = ctx.timer().time("weld", [&] { return weld_input(raw, opt.load.weld_tolerance).mesh; });
     welded = &welded_storage;
   }
   r.welded_vertices = welded->num_vertices();

@@ -29,7 +29,7 @@ enum class WeldMode {
 
 struct LoadOptions {
   WeldMode weld = WeldMode::automatic;
-  double weld_tolerance = 0.0;   // 0: bit-identical positions only; > 0: closer than this (model units)
+  double weld_tolerance = 0.0;   // 0: identical positions and rounding noise (weld_input); > 0: closer than this (model units)
   bool require_faces = true;     // a point cloud is an input error unless the app accepts one
   unsigned read_threads = 0;     // parsing a big text file: 0 = all cores, 1 = one (io::ReadOptions)
 };
