@@ -103,16 +103,22 @@ TEST(CvtRemeshFlips, RaiseAnglesKeepVerticesAndCount) {
   EXPECT_LE(non_delaunay, 2u * 2u);
 }
 
+TriangleMesh fertility() { return io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh; }
+
+// A point in the box grown by 20% on every side: inside the mesh, outside it and far away.
+Vec3 point_around(const BoundingBox& box, sampling::Random& random) {
+  const Vec3 lo = box.min, hi = box.max;
+  auto at = [&](double a, double b) { return a + (b - a) * (1.4 * random.uniform() - 0.2); };
+  return {at(lo.x, hi.x), at(lo.y, hi.y), at(lo.z, hi.z)};   // a braced list: drawn in this order
+}
+
 TEST(CvtClosestPoint, MatchesLinearScan) {
-  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const TriangleMesh m = fertility();
   const cvt::ClosestPointIndex index(m);
   sampling::Random random(7);
   const BoundingBox box = bounding_box(m);
-  const Vec3 lo = box.min, hi = box.max;
   for (int i = 0; i < 300; ++i) {
-    // Points in a box 20% larger than the mesh's: inside, outside and far away.
-    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
-                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const Vec3 p = point_around(box, random);
     const ClosestPoint a = index.closest(p), b = closest_surface_point(m, p);
     ASSERT_NE(a.point.element, kInvalidIndex);
     EXPECT_NEAR(a.distance, b.distance, 1e-9 * (1 + b.distance));
@@ -121,8 +127,7 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
   // within(p, r) is closest(p).distance <= r: at, just below and just above each point's own
   // distance, at 0, and for points on the surface (vertices: distance 0).
   for (int i = 0; i < 300; ++i) {
-    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
-                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const Vec3 p = point_around(box, random);
     const double d = index.closest(p).distance;
     for (double r : {d, d * (1 - 1e-9), d * (1 + 1e-9), 0.5 * d, 2 * d, 0.0})
       EXPECT_EQ(index.within(p, r), d <= r) << "point " << i << " r " << r << " distance " << d;
@@ -131,7 +136,7 @@ TEST(CvtClosestPoint, MatchesLinearScan) {
     EXPECT_TRUE(index.within(m.positions[v], 0.0));
     EXPECT_TRUE(index.within(m.positions[v], 1e-12));
   }
-  EXPECT_FALSE(index.within(lo, -1.0));
+  EXPECT_FALSE(index.within(box.min, -1.0));
   TriangleMesh none;
   none.positions = {{0, 0, 0}, {1, 0, 0}};
   none.triangles = {{0, 0, 1}};
@@ -159,14 +164,12 @@ TEST(CvtClosestPoint, TiesGoToTheLowestFace) {
 // closest(p) to the last bit, whatever face the hint names, near or far; within(p, r, hint)
 // is within(p, r), and a hint it returns is a face within r.
 TEST(CvtClosestPoint, HintsChangeNothing) {
-  const TriangleMesh m = io::read_mesh(std::string(GSP_TEST_DIR) + "/../data/samples/fertility.off").mesh;
+  const TriangleMesh m = fertility();
   const cvt::ClosestPointIndex index(m);
   sampling::Random random(11);
   const BoundingBox box = bounding_box(m);
-  const Vec3 lo = box.min, hi = box.max;
   for (int i = 0; i < 300; ++i) {
-    const Vec3 p{lo.x + (hi.x - lo.x) * (1.4 * random.uniform() - 0.2), lo.y + (hi.y - lo.y) * (1.4 * random.uniform() - 0.2),
-                 lo.z + (hi.z - lo.z) * (1.4 * random.uniform() - 0.2)};
+    const Vec3 p = point_around(box, random);
     const ClosestPoint plain = index.closest(p);
     const Index far = Index(random.uniform() * double(m.num_faces())) % Index(m.num_faces());
     // The answer itself and the face after it in the file (mostly a neighbour): the hints a
