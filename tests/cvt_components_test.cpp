@@ -54,6 +54,39 @@ TEST(CvtComponents, DuplicateFacesDropped) {
   EXPECT_EQ(t.euler_characteristic, 2);
 }
 
+// A seam: the icosphere exploded into one vertex per corner (as an OBJ exporter splits at
+// texture seams) is stitched back into the sphere; and two tetrahedra sharing a vertex
+// position (interior vertices, no boundary) are left apart.
+TEST(CvtComponents, BoundaryVerticesAtOnePositionAreStitched) {
+  const TriangleMesh sphere = test::icosphere(1);
+  TriangleMesh soup;
+  for (const Triangle& t : sphere.triangles) {
+    const Index base = Index(soup.positions.size());
+    for (Index v : t) soup.positions.push_back(sphere.positions[v]);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  const cvt::VertexStitch s = cvt::stitch_boundary_vertices(soup);
+  EXPECT_EQ(s.stitched, soup.num_vertices() - sphere.num_vertices());
+  ASSERT_EQ(s.mesh.num_vertices(), sphere.num_vertices());
+  for (std::size_t v = 0; v < soup.num_vertices(); ++v) EXPECT_EQ(s.mesh.positions[s.vertex_map[v]], soup.positions[v]);
+  const TopologyReport t = analyze_topology(s.mesh, build_connectivity(s.mesh));
+  EXPECT_TRUE(t.is_manifold());
+  EXPECT_TRUE(t.is_closed());
+  EXPECT_EQ(t.euler_characteristic, 2);
+
+  TriangleMesh two = test::tetrahedron();
+  const TriangleMesh other = test::tetrahedron();
+  add(two, other, 1.0, two.positions[0] - other.positions[1]);   // its vertex 1 on the first's vertex 0
+  ASSERT_EQ(two.positions[4 + 1], two.positions[0]);
+  const cvt::VertexStitch apart = cvt::stitch_boundary_vertices(two);
+  EXPECT_EQ(apart.stitched, 0u);
+  EXPECT_EQ(apart.mesh.triangles, two.triangles);
+  // What remesh_surface works on and gsp-cvt-compare measures against: the sphere again.
+  const TriangleMesh d = cvt::described_surface(soup);
+  EXPECT_EQ(d.num_vertices(), sphere.num_vertices());
+  EXPECT_EQ(analyze_topology(d, build_connectivity(d)).euler_characteristic, 2);
+}
+
 TEST(CvtComponents, OrientationAndDuplicates) {
   TriangleMesh t = test::flipped_face_tetrahedron();
   EXPECT_EQ(cvt::orient_consistently(t), 1);   // the reversed face, against the first face's choice

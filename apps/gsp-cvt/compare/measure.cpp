@@ -80,9 +80,7 @@ Measures measure_output(const TriangleMesh& input, const TriangleMesh& output, s
   }
   // Against the surface the input describes: where fans of faces only touch at a vertex, no
   // manifold output can keep that vertex, so the reference has it split (one per fan).
-  m.topology_kept =
-      cvt::same_topology_per_component(cvt::split_nonmanifold_vertices(cvt::drop_duplicate_faces(input).mesh).mesh,
-                                       output, &m.topology_difference);
+  m.topology_kept = cvt::same_topology_per_component(cvt::described_surface(input), output, &m.topology_difference);
   return m;
 }
 

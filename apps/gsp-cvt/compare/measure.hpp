@@ -26,9 +26,9 @@ struct Measures {
   // non-manifold edges; cvt::detect_features) to the output, % of the diagonal: how much of a
   // crease or a corner the remesh cut off. NaN: no feature edge.
   double feature_distance_percent = NAN;
-  // Manifold, oriented, no duplicates, the per-component topology of the input without its
-  // doubled faces and faces with a repeated vertex (cvt::drop_duplicate_faces) and with its
-  // non-manifold vertices split (cvt::split_nonmanifold_vertices).
+  // Manifold, oriented, no duplicates, the per-component topology of the surface the input
+  // describes (cvt::described_surface: its seams closed, without its doubled faces and faces
+  // with a repeated vertex, with its non-manifold vertices split).
   bool topology_kept = false;
   std::string topology_difference;
 };

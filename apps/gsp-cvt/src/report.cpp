@@ -78,6 +78,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
   res["components_remeshed"] = remesh.remeshed();
   res["components_kept"] = remesh.components.size() - remesh.remeshed();
   res["vertices_split"] = remesh.vertices_split;
+  res["boundary_vertices_stitched"] = remesh.boundary_vertices_stitched;
   res["duplicate_faces_removed"] = remesh.duplicate_faces_removed;
   res["repeated_vertex_faces_removed"] = remesh.repeated_vertex_faces_removed;
   res["junctions"] = remesh.remesh_stats.junctions;
@@ -131,6 +132,9 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (dropped)
     ctx.note(std::to_string(dropped) + " components remeshed without their feature curves (with them the remesh did not "
                                        "have the component's topology)");
+  if (r.boundary_vertices_stitched)
+    ctx.note(std::to_string(r.boundary_vertices_stitched) +
+             " boundary vertices at the same position as another were joined (seams closed)");
   if (r.duplicate_faces_removed || r.repeated_vertex_faces_removed)
     ctx.note(std::to_string(r.duplicate_faces_removed) + " faces on the same three vertices as an earlier face and " +
              std::to_string(r.repeated_vertex_faces_removed) + " faces with a repeated vertex were left out");

@@ -1,4 +1,5 @@
 #include <gsp/connectivity.hpp>
+#include <gsp/weld.hpp>
 #include <gsp/cvt/components.hpp>
 
 #include <algorithm>
@@ -123,6 +124,48 @@ ComponentTopology component_topology(const TriangleMesh& component) {
   TriangleMesh copy = component;
   c.orientable = orient_consistently(copy) >= 0;
   return c;
+}
+
+VertexStitch stitch_boundary_vertices(const TriangleMesh& mesh) {
+  const Connectivity conn = build_connectivity(mesh);
+  const std::size_t nv = mesh.num_vertices();
+  std::vector<bool> on_boundary(nv, false);
+  for (Index h = 0; h < conn.num_halfedges(); ++h)
+    if (conn.halfedge_edge[h] != kInvalidIndex && conn.radial_next[h] == h)
+      on_boundary[from_vertex(mesh, h)] = on_boundary[to_vertex(mesh, h)] = true;
+  // The boundary vertices alone, welded by exact position; each then takes its group's first.
+  TriangleMesh boundary;
+  std::vector<Index> boundary_ids;
+  for (Index v = 0; v < nv; ++v)
+    if (on_boundary[v]) boundary.positions.push_back(mesh.positions[v]), boundary_ids.push_back(v);
+  const WeldResult w = weld_vertices(boundary);
+  std::vector<Index> rep(nv);
+  std::iota(rep.begin(), rep.end(), Index(0));
+  std::vector<Index> first(w.mesh.num_vertices(), kInvalidIndex);
+  for (std::size_t i = 0; i < boundary_ids.size(); ++i) {
+    Index& f = first[w.vertex_map[i]];
+    if (f == kInvalidIndex) f = boundary_ids[i];
+    rep[boundary_ids[i]] = f;
+  }
+  VertexStitch out;
+  out.vertex_map.resize(nv);
+  for (Index v = 0; v < nv; ++v) {
+    if (rep[v] != v) {
+      out.vertex_map[v] = out.vertex_map[rep[v]];   // rep[v] < v: numbered already
+      ++out.stitched;
+      continue;
+    }
+    out.vertex_map[v] = Index(out.mesh.positions.size());
+    out.mesh.positions.push_back(mesh.positions[v]);
+  }
+  out.mesh.triangles.reserve(mesh.num_faces());
+  for (const Triangle& t : mesh.triangles)
+    out.mesh.triangles.push_back({out.vertex_map[t[0]], out.vertex_map[t[1]], out.vertex_map[t[2]]});
+  return out;
+}
+
+TriangleMesh described_surface(const TriangleMesh& mesh) {
+  return split_nonmanifold_vertices(drop_duplicate_faces(stitch_boundary_vertices(mesh).mesh).mesh).mesh;
 }
 
 FaceCleanup drop_duplicate_faces(const TriangleMesh& mesh) {

@@ -153,9 +153,10 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   if (co.edge_length > 0 && !std::isfinite(co.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
   if (!(options.retry_defect_fraction >= 0))
     throw InvalidInput("cvt: the retries' defect fraction must be 0 or more");
-  // The surface the input describes: each face once, and one vertex per fan where fans touch
-  // at a vertex.
-  const FaceCleanup clean = drop_duplicate_faces(mesh);
+  // The surface the input describes (described_surface): its seams closed, each face once, and
+  // one vertex per fan where fans touch at a vertex.
+  const VertexStitch seams = stitch_boundary_vertices(mesh);
+  const FaceCleanup clean = drop_duplicate_faces(seams.mesh);
   const VertexSplit fans = split_nonmanifold_vertices(clean.mesh);
   const ComponentSplit split = split_components(fans.mesh);
   std::vector<ComponentTopology> topology;
@@ -169,9 +170,10 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   SurfaceRemeshResult out;
   out.area = total_area;
   out.vertices_split = fans.split;
+  out.boundary_vertices_stitched = seams.stitched;
   out.duplicate_faces_removed = clean.duplicate_faces;
   out.repeated_vertex_faces_removed = clean.repeated_vertex_faces;
-  out.vertex_label.assign(mesh.num_vertices(), kInvalidIndex);
+  std::vector<Index> label(seams.mesh.num_vertices(), kInvalidIndex);   // per stitched vertex
 
   // What each component gets: kept as it is for a reason known before any CVT, or remeshed.
   const std::size_t nc = split.meshes.size();
@@ -280,7 +282,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
       } else {
         for (std::size_t v = 0; v < input.num_vertices(); ++v)
           if (r.vertex_label[v] != kInvalidIndex)
-            out.vertex_label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + r.vertex_label[v]);
+            label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + r.vertex_label[v]);
         out.sites += r.sites;
         out.energy += r.energy;
         add_curve(out.energy_curve, r.energy_curve);
@@ -296,6 +298,8 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     out.components.push_back(std::move(rep));
   }
   for (const TriangleMesh& k : kept) append(out.mesh, k);
+  out.vertex_label.resize(mesh.num_vertices());
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) out.vertex_label[v] = label[seams.vertex_map[v]];
   return out;
 }
 

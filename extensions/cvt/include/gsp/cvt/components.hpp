@@ -41,6 +41,24 @@ ComponentTopology component_topology(const TriangleMesh& component);
 // exists.
 std::int64_t orient_consistently(TriangleMesh& mesh);
 
+// Boundary vertices at the same position (bit-identical) joined into one: a seam that an
+// exporter split (OBJ and PLY files duplicate vertices along texture seams and between the
+// parts of a model; the apps weld STL and glTF inputs whole already). Only vertices on a
+// boundary edge take part, so two sheets that touch at an interior vertex stay apart (welded,
+// they would make a non-manifold edge and the component could not be remeshed). Faces keep
+// their order; vertex_map maps every input vertex to its vertex in the result, whose vertices
+// keep the input's order less the joined ones.
+struct VertexStitch {
+  TriangleMesh mesh;
+  std::vector<Index> vertex_map;
+  std::size_t stitched = 0;   // input vertices joined into an earlier one
+};
+VertexStitch stitch_boundary_vertices(const TriangleMesh& mesh);
+
+// The surface an input describes, as remesh_surface remeshes it and the topology it must keep
+// is measured on: stitch_boundary_vertices, drop_duplicate_faces, split_nonmanifold_vertices.
+TriangleMesh described_surface(const TriangleMesh& mesh);
+
 // Faces that are no part of the surface an input describes: a face on the same three vertices
 // as an earlier one (either orientation: a soup's doubled or tripled faces, each doubling an
 // edge into a non-manifold one) and a face that repeats a vertex. The rest keep their order

@@ -1,6 +1,7 @@
 #pragma once
 // Remeshing a whole input, whatever it is: every connected component on its own (after the
-// caller's welding, after leaving out doubled faces and faces with a repeated vertex,
+// caller's welding, after joining boundary vertices at the same position: seams,
+// stitch_boundary_vertices; after leaving out doubled faces and faces with a repeated vertex,
 // drop_duplicate_faces, and after splitting vertices where fans of faces only touch, which
 // makes such a component the manifold surface it describes: split_nonmanifold_vertices),
 // with a share of the vertex budget proportional to its area. What cannot
@@ -88,6 +89,7 @@ struct SurfaceRemeshResult {
   // energy (so the curve stays non-increasing, like each component's).
   std::vector<double> energy_curve;
   double area = 0;                         // of the whole input
+  std::size_t boundary_vertices_stitched = 0;   // joined into another at the same position (stitch_boundary_vertices)
   std::size_t vertices_split = 0;          // input vertices where fans only touched (split_nonmanifold_vertices)
   // Input faces left out (drop_duplicate_faces): on the same three vertices as an earlier
   // face, or with a vertex repeated.
