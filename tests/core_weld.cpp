@@ -71,8 +71,8 @@ TEST(CoreWeld, ExactWeldKeepsNearlyEqualPointsApart) {
 
 // The apps' weld (weld_input without a tolerance): identical positions and rounding noise.
 // A CAD export writes +-3.5e-15 where 0 was meant; the exploded sphere, with such noise on
-// the second copy of every corner, welds back to the sphere; vertices 1e-7 of the diagonal
-// apart (the closest distinct ones on the corpus) stay apart.
+// the second copy of every corner, welds back to the sphere; vertices 1e-9 of the diagonal
+// apart (as close as distinct ones come on the corpus: ten rounding steps) stay apart.
 TEST(CoreWeld, DenoisedWeldMergesRoundingNoiseOnly) {
   const TriangleMesh sphere = test::icosphere(2);
   TriangleMesh soup = test::explode(sphere);
@@ -95,7 +95,7 @@ TEST(CoreWeld, DenoisedWeldMergesRoundingNoiseOnly) {
   EXPECT_EQ(same.vertex_map, w.vertex_map);
 
   TriangleMesh m;
-  m.positions = {{0, 0, 0}, {1, 1, 1}, {3.5e-15, 0, -0.0}, {1 + 1e-7 * std::sqrt(3.0), 1, 1}, {1, 1, 1}};
+  m.positions = {{0, 0, 0}, {1, 1, 1}, {3.5e-15, 0, -0.0}, {1 + 1e-9 * std::sqrt(3.0), 1, 1}, {1, 1, 1}};
   EXPECT_EQ(weld_vertices_denoised(m).vertex_map, (std::vector<Index>{0, 1, 0, 2, 1}));
   // A tolerance given is the tolerant weld, whatever the noise.
   EXPECT_EQ(weld_input(m, 0.5).vertex_map, weld_vertices(m, 0.5).vertex_map);

@@ -22,7 +22,7 @@ WeldResult weld_vertices(const TriangleMesh& mesh, double tolerance = 0.0);
 // The rounding noise of CAD exports, as a fraction of the bounding box's diagonal: STL files
 // store coordinates that should be equal 1e-15-1e-14 apart (+-3.5e-15 where 0 was meant: the
 // sine of pi), which leaves cracks along edges that look welded. On the corpus the noisy pairs
-// lie within 1e-12 of the diagonal and the closest distinct vertices farther than 1e-7.
+// lie within 1e-12 of the diagonal and the closest distinct vertices farther than 1e-9.
 inline constexpr double kWeldNoise = 1e-10;
 
 // Identical positions and positions that differ by rounding noise: each coordinate is rounded
