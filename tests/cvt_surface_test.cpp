@@ -1,6 +1,7 @@
 // gsp::cvt::remesh_surface on inputs of several components (closed, open, non-manifold,
 // inconsistently oriented, non-orientable, tiny).
 #include "cvt_components.hpp"
+#include "test_data.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/cvt/components.hpp>
@@ -8,12 +9,16 @@
 #include <gsp/cvt/surface.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/topology.hpp>
+#include <gsp/weld.hpp>
+#include <gsp/io/mesh_io.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <string>
 #include <thread>
 
 namespace {
@@ -247,6 +252,38 @@ TEST(CvtSurface, NonOrientableKeptAndOptionsChecked) {
   EXPECT_THROW(cvt::remesh_surface(m, bad), InvalidInput);
   o.cvt.edge_length = 0.1;   // both given
   EXPECT_THROW(cvt::remesh_surface(m, o), InvalidInput);
+}
+
+// A CAD part whose dual is wrong at about two hundred places after 5 Lloyd steps (the ADIS
+// sensor STL at 2,000 sites): remesh_surface stops its CVT there and keeps it, saying why;
+// compute_cvt alone runs on (the check is off unless asked for), and asked for it stops.
+TEST(CvtSurface, HopelessDualStopsTheLloydLoop) {
+  if (!test::have_shared_data()) GTEST_SKIP() << "no shared meshes";
+  const TriangleMesh m = weld_input(io::read_mesh(test::shared_mesh("adis16480_sensor.stl")).mesh, 0.0).mesh;
+  cvt::SurfaceRemeshOptions o;
+  o.cvt.sites = 2000;
+  const cvt::SurfaceRemeshResult r = cvt::remesh_surface(m, o);
+  std::size_t stopped = 0;
+  for (const cvt::ComponentReport& c : r.components)
+    if (c.reason.find("the CVT stopped after 5 Lloyd steps") != std::string::npos) {
+      EXPECT_EQ(c.outcome, cvt::ComponentOutcome::kept_topology);
+      ++stopped;
+    }
+  EXPECT_GE(stopped, 1u);
+
+  cvt::CvtOptions c;
+  c.sites = 2000;
+  c.max_iterations = 8;
+  const cvt::CvtResult plain = cvt::compute_cvt(m, c);
+  EXPECT_FALSE(plain.stats.stopped_hopeless);
+  EXPECT_GT(plain.stats.iterations, 5);
+  c.hopeless_check_iteration = 5;
+  const cvt::CvtResult checked = cvt::compute_cvt(m, c);
+  EXPECT_TRUE(checked.stats.stopped_hopeless);
+  EXPECT_EQ(checked.stats.iterations, 5);
+  EXPECT_GT(double(checked.stats.hopeless_defects), std::max(50.0, 0.02 * double(checked.sites.size())));
+  c.hopeless_fraction = -1;
+  EXPECT_THROW(cvt::compute_cvt(m, c), InvalidInput);
 }
 
 }  // namespace

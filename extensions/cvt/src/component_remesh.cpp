@@ -36,6 +36,9 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
     CvtOptions c = co;
     c.sites = n;
     c.edge_length = 0;
+    c.hopeless_check_iteration = options.hopeless_check_iteration;
+    c.hopeless_defects = options.hopeless_defects;
+    c.hopeless_fraction = options.hopeless_fraction;
     std::size_t defects = 0;   // of the last attempt (same_topology_per_component)
     // Other initial sites only where a few places went wrong (SurfaceRemeshOptions::retries).
     const std::size_t local_defects = std::max<std::size_t>(1, std::size_t(options.retry_defect_fraction * double(n)));
@@ -53,7 +56,11 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
       t0 = Clock::now();
       r = restricted_delaunay(cvt, remesh_options);
       rep.remesh_seconds += seconds_since(t0);
-      return same_topology_per_component(oriented, r.mesh, &why, &defects);
+      const bool same = same_topology_per_component(oriented, r.mesh, &why, &defects);
+      if (!same && cvt.stats.stopped_hopeless)
+        why += " (the CVT stopped after " + std::to_string(cvt.stats.iterations) + " Lloyd steps, its dual wrong at " +
+               std::to_string(cvt.stats.hopeless_defects) + " places)";
+      return same;
     };
     CvtResult cvt;
     RemeshResult r;

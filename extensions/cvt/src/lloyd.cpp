@@ -178,6 +178,18 @@ class Lloyd {
   // True when the dual of these regions (before the remesh's post-pass, which keeps its
   // topology) is a manifold with the topology of `input`, component by component.
   bool dual_has_topology(const Evaluation& e, const std::vector<SurfaceSite>& sites, const TriangleMesh& input) const {
+    return same_topology_per_component(input, dual_mesh(e, sites));
+  }
+
+  // How many places of the dual are wrong (0: it has the input's topology).
+  std::size_t dual_defects(const Evaluation& e, const std::vector<SurfaceSite>& sites, const TriangleMesh& input) const {
+    std::size_t defects = 0;
+    if (same_topology_per_component(input, dual_mesh(e, sites), nullptr, &defects)) return 0;
+    return std::max<std::size_t>(defects, 1);
+  }
+
+  // The dual of the regions as a mesh of the sites it uses.
+  TriangleMesh dual_mesh(const Evaluation& e, const std::vector<SurfaceSite>& sites) const {
     std::vector<Vec3> positions(sites.size());
     for (std::size_t i = 0; i < sites.size(); ++i) positions[i] = sites[i].position;
     const DualTriangles d = dual_triangles(g_.mesh, g_.conn, e.label, positions);
@@ -194,7 +206,7 @@ class Lloyd {
       }
       dual.triangles.push_back(u);
     }
-    return same_topology_per_component(input, dual);
+    return dual;
   }
 
   // Sites whose region touches the boundary, moved onto it (before the first Lloyd step).
@@ -428,6 +440,8 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
 CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   validate(mesh);
   if (options.max_iterations < 0) throw InvalidInput("cvt: negative iteration cap");
+  if (options.hopeless_check_iteration < 0 || !(options.hopeless_fraction >= 0) || !std::isfinite(options.hopeless_fraction))
+    throw InvalidInput("cvt: the hopeless check needs an iteration >= 0 and a fraction >= 0");
   if (!(options.tolerance >= 0)) throw InvalidInput("cvt: the tolerance must be >= 0");
   if (!(options.over_relaxation >= 1.0 && options.over_relaxation < 2.0))
     throw InvalidInput("cvt: the over-relaxation factor must be in [1, 2)");
@@ -563,13 +577,22 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     stats.iterations = it;
     out.energy_curve.push_back(e.energy);
     report(it);
+    if (it == options.hopeless_check_iteration) {
+      const std::size_t defects = lloyd.dual_defects(e, sites, mesh);
+      const double allowed = std::max(double(options.hopeless_defects), options.hopeless_fraction * double(sites.size()));
+      if (double(defects) > allowed) {
+        stats.stopped_hopeless = true;
+        stats.hopeless_defects = defects;
+        break;
+      }
+    }
     // After a fix the new sites still need Lloyd steps of their own.
     if (relative < options.tolerance && !fixed_now) {
       stats.converged = true;
       break;
     }
   }
-  if (options.fix_regions) {
+  if (options.fix_regions && !stats.stopped_hopeless) {
     const std::size_t cap = std::size_t(options.max_closing_fraction * double(stats.initial_sites));
     // A round is kept only if the energy estimate does not rise (as the fixes above), so the
     // curve, which gets one entry per round and step, stays monotone.

@@ -75,6 +75,15 @@ struct CvtOptions {
   // Then up to this many Lloyd steps, each kept only if the energy goes down and the dual
   // keeps the topology.
   int closing_steps = 3;
+  // For a remesh (remesh_surface sets it: SurfaceRemeshOptions::hopeless_check_iteration):
+  // after this many Lloyd steps the dual is checked once, and wrong at more than
+  // max(hopeless_defects, hopeless_fraction * sites) places (non-manifold edges and vertices,
+  // as same_topology_per_component counts them) the loop and the closing rounds stop there
+  // (CvtStats::stopped_hopeless) and the result goes back as it is. 0 (the default here): the
+  // CVT is computed to the end whatever its dual.
+  int hopeless_check_iteration = 0;
+  std::size_t hopeless_defects = 50;
+  double hopeless_fraction = 0.02;
   // Sites whose region touches the mesh boundary are kept on the boundary: they move to the
   // point of their region's boundary arc closest to the area centroid (the constrained
   // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
@@ -131,6 +140,8 @@ struct CvtStats {
   int subdivisions = 0;
   std::size_t bisections = 0;      // long edges split after the uniform subdivision
   bool converged = false;          // tolerance met (else the iteration cap or no decrease)
+  bool stopped_hopeless = false;   // stopped at CvtOptions::hopeless_check_iteration
+  std::size_t hopeless_defects = 0;   // the places the dual was wrong at then
   std::uint64_t update_steps = 0;  // GSP update steps over all propagations
   std::size_t propagations = 0;
   CvtTimings timings;

@@ -46,6 +46,16 @@ struct SurfaceRemeshOptions {
   // each try costs a whole CVT, so those are not tried again.
   std::size_t retries = 2;
   double retry_defect_fraction = 0.01;
+  // A component's CVT stops after this many Lloyd steps where its dual is wrong at more than
+  // max(hopeless_defects, hopeless_fraction * sites) places (CvtOptions::hopeless_check_iteration;
+  // the component is then kept, its reason says so). On the corpus no dual that far off came
+  // right: the boiler section was wrong at 1,282 places after 5 steps and 832 after 12, the
+  // tank tread's parts at 308 and 332, the gear wheel at 224, and all were kept in the end after
+  // 6-13 s of Lloyd steps; the duals that came right were wrong at 27 places at most then
+  // (docs/cvt.md, "Hopeless duals"). 0: every CVT runs to the end.
+  int hopeless_check_iteration = 5;
+  std::size_t hopeless_defects = 50;
+  double hopeless_fraction = 0.02;
 };
 
 enum class ComponentOutcome {
