@@ -159,21 +159,21 @@ TriangleMesh GeodesicSolver::release_mesh() && {
   return mesh;
 }
 
-void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared,
+void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<const TriangleMesh> shared,
                                  const SolverOptions& options, TriangleMesh* owned) {
   using Clock = std::chrono::steady_clock;
-  validate(input);
-  if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(input, options.edge_lengths);
+  validate(given);
+  if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(given, options.edge_lengths);
   auto t0 = Clock::now();
   custom_lengths = !options.edge_lengths.empty();
   heuristic = options.heuristic;
   if (options.optimize_layout) {
-    Layout layout = options.spatial_layout ? gsp::spatial_layout(input) : compute_cache_layout(input);
+    Layout layout = options.spatial_layout ? gsp::spatial_layout(given) : compute_cache_layout(given);
     if (owned) {
       apply_layout_in_place(*owned, layout);
       mesh_store = std::make_shared<TriangleMesh>(std::move(*owned));
     } else {
-      mesh_store = std::make_shared<TriangleMesh>(apply_layout(input, layout));
+      mesh_store = std::make_shared<TriangleMesh>(apply_layout(given, layout));
     }
     maps = detail::IndexMaps(std::move(layout));
     owns_mesh = true;
@@ -183,7 +183,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& input, std::shared_ptr<cons
   } else if (shared) {
     mesh_store = std::move(shared);
   } else {
-    mesh_store = std::make_shared<TriangleMesh>(input);
+    mesh_store = std::make_shared<TriangleMesh>(given);
     owns_mesh = true;
   }
   const auto t1 = Clock::now();

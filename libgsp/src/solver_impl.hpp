@@ -222,7 +222,7 @@ struct GeodesicSolver::Impl {
     return tri.needs_double ? Precision::double_precision : Precision::single;
   }
   // `owned`: the caller's mesh, handed over (GeodesicSolver(TriangleMesh&&)); laid out in place.
-  void build(const TriangleMesh& input, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options,
+  void build(const TriangleMesh& given, std::shared_ptr<const TriangleMesh> shared, const SolverOptions& options,
              TriangleMesh* owned = nullptr);
   // The input triangulation: skipped faces, lengths (and the mean edge) from the mesh alone,
   // then the radial links from the connectivity.

@@ -102,13 +102,13 @@ DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, co
   // Read off the vertex's corners without walking the fan.
   auto fewer_than_three = [&](Index v) {
     Index first = 0, second = 0;
-    int seen = 0;
+    int labels_seen = 0;
     for (Index i = conn.vertex_corner_begin[v]; i < conn.vertex_corner_begin[v + 1]; ++i) {
       const Index l = label[face_of(conn.vertex_corners[i])];
-      if ((seen > 0 && l == first) || (seen > 1 && l == second)) continue;
-      if (seen == 2) return false;
-      (seen == 0 ? first : second) = l;
-      ++seen;
+      if ((labels_seen > 0 && l == first) || (labels_seen > 1 && l == second)) continue;
+      if (labels_seen == 2) return false;
+      (labels_seen == 0 ? first : second) = l;
+      ++labels_seen;
     }
     return true;
   };
