@@ -54,10 +54,11 @@ class KeyTable {
   std::vector<Index> values_;
 };
 
-// The step a coordinate is rounded to (step > 0): its index, clamped like cell_coordinate.
-std::uint64_t rounded_coordinate(double x, double inv_step) {
+// Grid cell of a coordinate. Clamping keeps far-away cells adjacent-or-equal (floor and clamp
+// are both monotone), so the 27-cell search stays correct; it only gets slower there.
+std::uint64_t cell_coordinate(double x, double inv_cell) {
   constexpr double kLimit = 4.0e18;
-  const double c = std::clamp(std::floor(x * inv_step + 0.5), -kLimit, kLimit);
+  const double c = std::clamp(std::floor(x * inv_cell), -kLimit, kLimit);
   return static_cast<std::uint64_t>(static_cast<std::int64_t>(c));
 }
 
@@ -70,22 +71,15 @@ std::vector<Index> representatives_exact(const TriangleMesh& mesh, double step =
   const double inv_step = step > 0 ? 1.0 / step : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 p = mesh.positions[i];
-    const KeyTable::Key key = step > 0 ? KeyTable::Key{rounded_coordinate(p.x, inv_step), rounded_coordinate(p.y, inv_step),
-                                                       rounded_coordinate(p.z, inv_step)}
+    // Rounded to the nearest step (cells centred on the multiples, so +-noise around 0 meet).
+    auto rounded = [&](double x) { return cell_coordinate(x * inv_step + 0.5, 1.0); };
+    const KeyTable::Key key = step > 0 ? KeyTable::Key{rounded(p.x), rounded(p.y), rounded(p.z)}
                                        : KeyTable::Key{coordinate_bits(p.x), coordinate_bits(p.y), coordinate_bits(p.z)};
     const std::size_t s = table.slot(key);
     if (table.value(s) == kInvalidIndex) table.set(s, key, static_cast<Index>(i));
     rep[i] = table.value(s);
   }
   return rep;
-}
-
-// Grid cell of a coordinate. Clamping keeps far-away cells adjacent-or-equal (floor and clamp
-// are both monotone), so the 27-cell search stays correct; it only gets slower there.
-std::uint64_t cell_coordinate(double x, double inv_cell) {
-  constexpr double kLimit = 4.0e18;
-  const double c = std::clamp(std::floor(x * inv_cell), -kLimit, kLimit);
-  return static_cast<std::uint64_t>(static_cast<std::int64_t>(c));
 }
 
 // Vertices in input order; each joins the lowest-index representative within `tolerance`

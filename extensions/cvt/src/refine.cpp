@@ -314,13 +314,14 @@ SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surf
   std::vector<bool> skip(surface.num_vertices(), false);
   params.skip = &skip;
   const TriangleMesh before = mesh;
+  SmoothParams settle = smooth;   // the moves, without the cap flips and the pulls
+  settle.cap_flips = false;
+  settle.pull_distance = 0;
   for (int attempt = 0; attempt < 3; ++attempt) {
     params.slack_deg = attempt < 2 ? 10.0 : 0.0;
     const RefineResult added = insert_at_far_points(mesh, surface, params);
     if (added.inserted == 0) break;
-    SmoothParams again = smooth;
-    again.cap_flips = false;
-    again.pull_distance = 0;
+    SmoothParams again = settle;
     again.only = &added.touched;
     const std::vector<bool> movable = grow_by_rings(mesh, added.touched, kSettleRings);
     again.movable = &movable;
@@ -351,10 +352,7 @@ SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surf
   // that the moves can raise again, which the moves of every attempt used to reach by
   // spreading out from the insertions (docs/cvt.md, "Settling the insertions").
   if (out.inserted > 0) {
-    SmoothParams last = smooth;
-    last.cap_flips = false;
-    last.pull_distance = 0;
-    const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, last);
+    const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, settle);
     out.flips += c.flips;
     out.moves += c.moves;
     out.boundary_moves += c.boundary_moves;

@@ -23,22 +23,11 @@ inline double angle_at(Vec3 p, Vec3 q, Vec3 r) { return std::atan2(norm(cross(q 
 // below about 1e-9 radians, where atan2's own rounding is larger than their difference).
 inline double min_angle(Vec3 a, Vec3 b, Vec3 c) {
   const double la = dot(b - c, b - c), lb = dot(c - a, c - a), lc = dot(a - b, a - b);   // opposite a, b, c
-  constexpr double tie = 1 + 2e-6;   // squared lengths
-  if (la <= lb && la <= lc) {
-    double m = angle_at(a, b, c);
-    if (lb <= la * tie) m = std::min(m, angle_at(b, c, a));
-    if (lc <= la * tie) m = std::min(m, angle_at(c, a, b));
-    return m;
-  }
-  if (lb <= lc) {
-    double m = angle_at(b, c, a);
-    if (la <= lb * tie) m = std::min(m, angle_at(a, b, c));
-    if (lc <= lb * tie) m = std::min(m, angle_at(c, a, b));
-    return m;
-  }
-  double m = angle_at(c, a, b);
-  if (la <= lc * tie) m = std::min(m, angle_at(a, b, c));
-  if (lb <= lc * tie) m = std::min(m, angle_at(b, c, a));
+  const double near_shortest = std::min({la, lb, lc}) * (1 + 2e-6);   // squared lengths
+  double m = 10;
+  if (la <= near_shortest) m = std::min(m, angle_at(a, b, c));
+  if (lb <= near_shortest) m = std::min(m, angle_at(b, c, a));
+  if (lc <= near_shortest) m = std::min(m, angle_at(c, a, b));
   return m;
 }
 
