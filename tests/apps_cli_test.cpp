@@ -246,6 +246,26 @@ TEST(CliLoad, PointCloudIsAnErrorUnlessAccepted) {
   EXPECT_EQ(gsp::cli::load_mesh(path, accept).mesh.num_vertices(), 3u);
 }
 
+// Coordinates no module can square (gsp::validate_positions): one line naming the file and
+// the vertex, for every app, instead of distances of 0 everywhere.
+TEST(CliLoad, CoordinatesOutOfRangeAreAnError) {
+  gsp::test::ScratchDir dir("cli");
+  gsp::test::write_file(dir / "far.off", "OFF\n3 1 0\n0 0 0\n1e300 0 0\n0 1e300 0\n3 0 1 2\n");
+  gsp::test::write_file(dir / "near.off", "OFF\n3 1 0\n0 0 0\n1e-300 0 0\n0 1e-300 0\n3 0 1 2\n");
+  for (const char* name : {"far.off", "near.off"}) {
+    const std::string path = (dir / name).string();
+    try {
+      gsp::cli::load_mesh(path, {});
+      FAIL() << name;
+    } catch (const gsp::Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(path), std::string::npos) << what;
+      EXPECT_NE(what.find("scale the input"), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+  }
+}
+
 TEST(CliLoad, ToleranceMergesNearbyVertices) {
   gsp::test::ScratchDir dir("cli");
   gsp::test::write_file(dir / "t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1.0000001 0 0\nv 1 1 0\nf 1 2 3\nf 4 5 3\n");

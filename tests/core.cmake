@@ -2,6 +2,7 @@
 # built in code (helpers/mesh_builders.hpp); the shared-data test also needs the readers.
 gsp_test(core_topology SOURCES core_topology.cpp DEPS gsp::core)
 gsp_test(core_weld SOURCES core_weld.cpp DEPS gsp::core)
+gsp_test(core_coordinate_range SOURCES core_coordinate_range.cpp DEPS gsp::core)
 gsp_test(core_layout SOURCES core_layout.cpp DEPS gsp::core)
 gsp_test(core_intrinsic SOURCES core_intrinsic.cpp DEPS gsp::core)
 gsp_test(core_surface_point SOURCES core_surface_point.cpp DEPS gsp::core)

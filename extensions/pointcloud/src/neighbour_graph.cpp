@@ -1,5 +1,6 @@
 // k-NN / radius graph: directed neighbour lists from the k-d tree, then symmetrised into CSR.
 #include <gsp/errors.hpp>
+#include <gsp/mesh.hpp>
 #include <gsp/pointcloud/neighbour_graph.hpp>
 
 #include "graph_builder.hpp"
@@ -66,8 +67,7 @@ NeighbourGraph build_graph(const std::vector<Vec3>& points, const PointTree& tre
 
 NeighbourGraph build_neighbour_graph(const std::vector<Vec3>& points, const NeighbourOptions& options) {
   detail::check_options(options);
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!is_finite(points[i])) throw InvalidInput("point cloud: point " + std::to_string(i) + " is not finite");
+  validate_positions(points, "point cloud: point");
   const detail::PointTree tree(points);
   return detail::build_graph(points, tree, options);
 }

@@ -83,8 +83,7 @@ PointCloudGeodesics::PointCloudGeodesics(const std::vector<Vec3>& points, const 
                                          const PointCloudOptions& options)
     : impl_(std::make_unique<Impl>()) {
   detail::check_options(options.neighbours);
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (!is_finite(points[i])) throw InvalidInput("point cloud: point " + std::to_string(i) + " is not finite");
+  validate_positions(points, "point cloud: point");
   if (!normals.empty() && normals.size() != points.size())
     throw InvalidInput("point cloud: " + std::to_string(normals.size()) + " normals for " +
                        std::to_string(points.size()) + " points");

@@ -19,8 +19,21 @@ struct TriangleMesh {
 };
 
 // Throws InvalidInput if a triangle names a vertex that does not exist or a position is
-// not finite. Repeated indices, zero areas and duplicates are *not* errors (see topology.hpp).
+// not usable (validate_positions). Repeated indices, zero areas and duplicates are *not*
+// errors (see topology.hpp).
 void validate(const TriangleMesh& mesh);
+
+// Coordinates every module can square: at most kMaxCoordinate in magnitude, and positions
+// that span either nothing (all at one point: a degenerate input, not an error) or at least
+// kMinExtent. The closest-point and ray searches (Embree) hold positions in single precision,
+// whose squares overflow from about 1.8e19 (gsp-cvt's Hausdorff distance was NaN at 1e20) and
+// lose their precision below about 1e-19; the core's double precision has fourth powers of
+// lengths (Heron's areas: GSP was 1.4% off at 9e99, and gave zeros everywhere at 1e300).
+// Throws InvalidInput naming the first position (`what`: "vertex", "point cloud: point") that
+// is not finite or too large, or the span.
+inline constexpr double kMaxCoordinate = 1e18;
+inline constexpr double kMinExtent = 1e-18;
+void validate_positions(const std::vector<Vec3>& positions, const char* what = "vertex");
 
 // True when a triangle names one vertex twice: it has no plane, no angles, no unfolding, and
 // every module leaves it out (topology.hpp counts such faces).
