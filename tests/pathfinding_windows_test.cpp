@@ -153,5 +153,21 @@ TEST(PathWindows, NeedlePlateAgainstExact) {
   EXPECT_GT(n, 30);
 }
 
+// A path through a vertex where two squares only touch (the window field's corner windows
+// there): straight to the joint and on, traced through the windows, with no fallback to GSP's
+// A* or the edges.
+TEST(PathWindows, ThroughAVertexWhereFacesOnlyTouch) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 1, 0}, {2, 2, 0}, {1, 2, 0}};
+  m.triangles = {{0, 1, 3}, {1, 2, 3}, {2, 4, 6}, {4, 5, 6}};
+  const pathfinding::PathTracer tracer(m);
+  const auto r = pathfinding::shortest_paths(tracer, Endpoint::at_vertex(0), {Endpoint::at_vertex(5)});
+  ASSERT_EQ(r.paths.size(), 1u);
+  ASSERT_TRUE(r.paths[0].found());
+  EXPECT_NEAR(r.paths[0].length, 2 * std::sqrt(2.0), 1e-9);
+  EXPECT_EQ(r.astar_fallbacks, 0u);
+  EXPECT_EQ(r.edge_fallbacks, 0u);
+}
+
 }  // namespace
 }  // namespace gsp::test

@@ -30,6 +30,47 @@ constexpr int kSamples = 7;
 // per target and face); beyond, it only stops early.
 constexpr std::size_t kGoalTargets = 16;
 
+// The fans around each vertex (WindowGeodesics::Impl::corner_fan, joint): corners of one
+// vertex are in one fan when their faces share an edge at the vertex that the propagation
+// crosses (ring). A union-find over each vertex's few corners.
+void find_fans(WindowGeodesics::Impl& m) {
+  m.corner_fan.assign(m.corners.size(), 0);
+  m.joint.assign(m.num_vertices, false);
+  std::vector<Index> parent;
+  for (std::size_t v = 0; v < m.num_vertices; ++v) {
+    const Index begin = m.corner_begin[v], end = m.corner_begin[v + 1];
+    if (end - begin < 2) continue;
+    parent.resize(end - begin);
+    for (Index i = 0; i < parent.size(); ++i) parent[i] = i;
+    auto find = [&](Index x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    auto local = [&](Index face) {   // the position of `face`'s corner at v in v's list
+      for (Index c = begin; c < end; ++c)
+        if (face_of(m.corners[c]) == face) return c - begin;
+      return kInvalidIndex;
+    };
+    for (Index c = begin; c < end; ++c) {
+      const Index corner = m.corners[c], f = face_of(corner);
+      // the two edges at the corner: leaving it (halfedge `corner`) and arriving (the previous)
+      for (Index h : {corner, prev_halfedge(corner)})
+        for (Index g = m.ring[h]; g != h; g = m.ring[g]) {
+          const Index o = local(face_of(g));
+          if (o != kInvalidIndex && face_of(g) != f) parent[find(c - begin)] = find(o);
+        }
+    }
+    std::vector<Index> number(parent.size(), kInvalidIndex);
+    Index fans = 0;
+    for (Index i = 0; i < parent.size(); ++i) {
+      const Index r = find(i);
+      if (number[r] == kInvalidIndex) number[r] = fans++;
+      m.corner_fan[begin + i] = number[r];
+    }
+    m.joint[v] = fans > 1;
+  }
+}
+
 }  // namespace
 
 WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, bool intrinsic_delaunay)
@@ -82,6 +123,7 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, const Connectivity& c
   for (std::size_t f = 0; f < m.triangles.size(); ++f)
     if (!skipped[f])
       for (Index i = 0; i < 3; ++i) m.corners[fill[m.triangles[f][i]]++] = Index(3 * f + i);
+  find_fans(m);
 }
 
 WindowGeodesics::~WindowGeodesics() = default;
@@ -359,6 +401,29 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
           for (int o = 0; o < n; ++o) changed |= offer(g, out[o]);
         }
         if (changed) push(g);
+      }
+    }
+    // At a joint vertex the faces of its other fans share no edge with f: they get the
+    // vertex's value from f as a corner window (a path through the vertex is on the surface).
+    for (Index i = 0; i < 3; ++i) {
+      const Index v = mesh.triangles[f][i];
+      if (!mesh.joint[v]) continue;
+      double at = kInf;
+      Index label = kInvalidIndex;
+      for (unsigned w = 0; w < count[f]; ++w) {
+        const Window& x = win[block[f] * k + w];
+        if (const double d = value_at(x, frame[f][i]); d < at) at = d, label = x.label;
+      }
+      if (!(at < kInf)) continue;
+      Index own = kInvalidIndex;
+      for (Index c = mesh.corner_begin[v]; c < mesh.corner_begin[v + 1]; ++c)
+        if (mesh.corners[c] == 3 * f + i) own = mesh.corner_fan[c];
+      for (Index c = mesh.corner_begin[v]; c < mesh.corner_begin[v + 1]; ++c) {
+        if (mesh.corner_fan[c] == own) continue;
+        const Index g = face_of(mesh.corners[c]);
+        Window w = corner_window(frame[g][corner_of(mesh.corners[c])], at);
+        w.label = label;
+        if (offer(g, w)) push(g);
       }
     }
     sent[f] = std::uint8_t((1u << count[f]) - 1);

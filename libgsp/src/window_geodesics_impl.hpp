@@ -27,6 +27,12 @@ struct WindowGeodesics::Impl {
   std::vector<Index> ring;                // per halfedge: the next face's halfedge on its edge
   std::vector<std::array<detail::windows::V2, 3>> frame;   // per face: its corners in its own plane
   std::vector<Index> corner_begin, corners;   // vertex -> corners 3 f + i, CSR
+  // Per corner (the order of `corners`): the fan of its vertex it belongs to (faces joined
+  // over the propagation's edges around the vertex), numbered from 0 per vertex; and the
+  // vertices with more than one fan (joints: faces that meet there only at the vertex), where
+  // windows cannot cross an edge and a value at the vertex goes on as a corner window instead.
+  std::vector<Index> corner_fan;
+  std::vector<bool> joint;
 };
 
 struct WindowField::Data {
