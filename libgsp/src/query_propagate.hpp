@@ -6,6 +6,8 @@
 #include "solver_impl.hpp"
 #include "vertex_relaxation.hpp"
 
+#include <gsp/intrinsic/edge_relaxation.hpp>
+
 #include <algorithm>
 
 namespace gsp {
@@ -119,13 +121,14 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
 
 // Rounds that seed pseudo-sources; the corpus needs at most 2 (docs/gsp-core.md). Past it the
 // values are still relaxed (so never above an edge path), only not propagated from.
-inline constexpr int kMaxRelaxationRounds = 32;
+// (gsp/intrinsic/edge_relaxation.hpp holds both values, shared with the extensions.)
+inline constexpr int kMaxRelaxationRounds = intrinsic::kMaxRelaxationRounds;
 // A vertex lowered by less than this (relative) keeps its lower value but seeds nothing. An edge
 // along the front lowers many vertices by GSP's own error (d(u) + |uv| beats d(v) by a hair
 // where uv runs with the geodesic), and seeding all of them costs far more than it gains.
 // Lowered by more than this, the face sources round the vertex failed it (CAD parts, poles,
 // soups): there a new round pays (docs/gsp-core.md, "Vertices as pseudo-sources").
-inline constexpr double kPseudoSourceGain = 1e-2;
+inline constexpr double kPseudoSourceGain = intrinsic::kPseudoSourceGain;
 
 template <class Real, class Value>
 void GeodesicSolver::Impl::seed_pseudo_sources(const Triangulation& tri, const std::vector<Index>& vertices,

@@ -89,6 +89,9 @@ void report(cli::Context& ctx, const lines::LineSource& src, const lines::LineRe
   ops["faces_reached"] = r.stats.faces_reached;
   ops["max_waves_per_face"] = r.stats.max_waves_per_face;
   ops["raised_to_line"] = r.stats.raised_to_line;
+  ops["relaxed_vertices"] = r.stats.relaxed_vertices;
+  ops["relaxation_rounds"] = r.stats.relaxation_rounds;
+  ops["pseudo_sources"] = r.stats.pseudo_sources;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <gsp/intrinsic/coincident_vertices.hpp>
 #include <gsp/intrinsic/corner_rules.hpp>
 #include <gsp/intrinsic/edge_lengths.hpp>
+#include <gsp/intrinsic/edge_relaxation.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/lines/line_distances.hpp>
@@ -93,8 +94,10 @@ class Propagation {
     for (Index f = 0; f < Index(nf); ++f)
       if (!skipped_[f]) frames_[f] = intrinsic::face_frame(mesh, f);
     // The core's lengths and unit: tolerances in mean edges mean the same here as there.
-    std::vector<double> length = intrinsic::halfedge_lengths(mesh);
-    intrinsic::snap_zero_lengths(length);
+    length_ = intrinsic::halfedge_lengths(mesh);
+    intrinsic::snap_zero_lengths(length_);
+    const std::vector<double>& length = length_;
+    skipped_face_ = skipped_face;
     scale_ = intrinsic::mean_edge_length(length, skipped_face);
     // The core's vertex kinds (flat, saddle, convex) for the corner rules
     // (gsp/intrinsic/corner_rules.hpp): bridge and coincident vertices and the ends of
@@ -139,13 +142,33 @@ class Propagation {
     stats_.pieces = src.pieces.size();
   }
 
+  // The waves, then the core's vertex relaxation (gsp/intrinsic/edge_relaxation.hpp): values
+  // lowered along the edges, and a vertex lowered by more than kPseudoSourceGain passes its
+  // value on as a point source, as a bridge does, for another round. Without it a vertex
+  // could end far above its edge path where the waves round it failed (a CAD pig STL with 421
+  // vertices where faces only touch, its boundary as the source: 3.6x the edge path).
   void run() {
-    cross_bridges();
-    while (!queue_.empty()) {
-      const Entry e = queue_.top();
-      queue_.pop();
-      expand(e);
+    const std::vector<Index>* from = nullptr;   // the first round looks at every edge
+    std::vector<Index> changed;
+    for (int round = 0;; ++round) {
       cross_bridges();
+      while (!queue_.empty()) {
+        const Entry e = queue_.top();
+        queue_.pop();
+        expand(e);
+        cross_bridges();
+      }
+      std::size_t relaxed = 0;
+      const std::vector<Index> lowered =
+          intrinsic::relax_along_edges(mesh_, conn_, length_, skipped_face_, distance_, segment_, relaxed, from);
+      stats_.relaxed_vertices += relaxed;
+      if (lowered.empty() || round >= intrinsic::kMaxRelaxationRounds) return;
+      ++stats_.relaxation_rounds;
+      stats_.pseudo_sources += lowered.size();
+      changed_vertices_.clear();
+      for (Index v : lowered) bridge_pending_.push_back(v);
+      cross_bridges();
+      from = &changed_vertices_;
     }
   }
 
@@ -231,6 +254,7 @@ class Propagation {
       const double d = c == bent ? bent_value : at[c];
       if (!(d < distance_[t[c]])) continue;
       distance_[t[c]] = d, segment_[t[c]] = w.segment;
+      changed_vertices_.push_back(t[c]);
       if (bridge_[t[c]]) bridge_pending_.push_back(t[c]);
     }
     queue_.push({key, f, id});
@@ -379,7 +403,10 @@ class Propagation {
   Connectivity conn_;
   std::vector<FaceFrame> frames_;
   std::vector<std::uint8_t> skipped_, kinds_, bridge_;
+  std::vector<bool> skipped_face_;   // the same as skipped_, as the relaxation takes it
+  std::vector<double> length_;       // per halfedge, snapped (the relaxation's edges)
   std::vector<Index> bridge_pending_;
+  std::vector<Index> changed_vertices_;   // lowered by the waves since the last relaxation
   std::vector<FaceWaves> faces_;
   std::vector<double> distance_;
   std::vector<Index> segment_;

@@ -38,6 +38,11 @@ struct LineStats {
   std::uint64_t faces_reached = 0;
   std::uint64_t max_waves_per_face = 0;
   std::uint64_t raised_to_line = 0;   // vertices raised to the straight-line bound (by > 1e-6)
+  // The core's vertex relaxation (gsp/intrinsic/edge_relaxation.hpp): values lowered along
+  // the edges, rounds that seeded point sources, and those sources.
+  std::uint64_t relaxed_vertices = 0;
+  std::uint64_t relaxation_rounds = 0;
+  std::uint64_t pseudo_sources = 0;
 };
 
 struct LineResult {
