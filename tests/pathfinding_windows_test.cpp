@@ -169,5 +169,25 @@ TEST(PathWindows, ThroughAVertexWhereFacesOnlyTouch) {
   EXPECT_EQ(r.edge_fallbacks, 0u);
 }
 
+// Four collinear vertices and two faces without area: no field reaches past the start (no
+// face has a plane), but the edges join them, so the path is the edge path (gsp-geodesic gives
+// 0 1 2 3 there), by either method; a vertex of another component still has none.
+TEST(PathWindows, EdgesWithoutAreaStillJoin) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {10, 0, 0}, {11, 0, 0}, {10, 1, 0}};
+  m.triangles = {{0, 1, 2}, {1, 2, 3}, {4, 5, 6}};
+  const pathfinding::PathTracer tracer(m);
+  for (const auto method : {pathfinding::PathMethod::windows, pathfinding::PathMethod::astar}) {
+    pathfinding::PathQueryOptions o;
+    o.method = method;
+    const auto r = pathfinding::shortest_paths(tracer, Endpoint::at_vertex(0), {Endpoint::at_vertex(3), Endpoint::at_vertex(5)}, o);
+    ASSERT_EQ(r.paths.size(), 2u);
+    ASSERT_TRUE(r.paths[0].found());
+    EXPECT_NEAR(r.paths[0].length, 3.0, 1e-12);
+    EXPECT_GE(r.edge_fallbacks, 1u);
+    EXPECT_FALSE(r.paths[1].found());
+  }
+}
+
 }  // namespace
 }  // namespace gsp::test

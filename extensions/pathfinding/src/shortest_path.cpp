@@ -198,6 +198,26 @@ void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const E
   }
 }
 
+// An end that no field reached may still be joined to `from` by edges whose faces have no
+// area (a strip of collinear vertices; a mesh of nothing else): the path along the edges is
+// on the surface too, so it is returned (counted as an edge fallback) rather than no path.
+// gsp-geodesic gives such vertices their edge distances; before, gsp-path said "not
+// connected" there.
+void edge_paths_for_unreached(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
+                              const std::vector<Endpoint>& to, PathQueryResult& r) {
+  std::vector<std::size_t> missing;
+  for (std::size_t k = 0; k < to.size(); ++k)
+    if (!r.paths[k].found()) missing.push_back(k);
+  if (missing.empty()) return;
+  std::vector<Endpoint> ends;
+  for (std::size_t k : missing) ends.push_back(to[k]);
+  const auto t0 = Clock::now();
+  const PathQueryResult edges = edge_paths(mesh, tracer, from, ends);
+  r.trace_seconds += seconds_since(t0);
+  for (std::size_t i = 0; i < missing.size(); ++i)
+    if (edges.paths[i].found()) r.paths[missing[i]] = edges.paths[i], ++r.edge_fallbacks;
+}
+
 // One query as its steps share it: the inputs, the field from `from`, what the surface test
 // needs, and per end the verdict so far. A walk that cannot be completed in this field (and
 // whose descent fallback fails too) is kept as an error: the far end's field may still give
@@ -306,6 +326,7 @@ PathQueryResult query(LazySolver& solver, const PathTracer& tracer, const Endpoi
     for (std::size_t k = 0; k < to.size(); ++k) trace_back(q, options, k, r);
   edge_safety_net(mesh, tracer, from, to, field, q.invalid, q.failed, r);
   if (options.method == PathMethod::windows) astar_for_unreached(solver, tracer, from, to, options, r);
+  edge_paths_for_unreached(mesh, tracer, from, to, r);
   return r;
 }
 
