@@ -9,6 +9,8 @@
 #include <chrono>
 #include <exception>
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace gsp::pathfinding {
 
@@ -198,6 +200,15 @@ void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const E
   }
 }
 
+// The ends without a path so far: their places in `to`, and the end points.
+std::pair<std::vector<std::size_t>, std::vector<Endpoint>> unreached(const std::vector<Endpoint>& to,
+                                                                      const PathQueryResult& r) {
+  std::pair<std::vector<std::size_t>, std::vector<Endpoint>> out;
+  for (std::size_t k = 0; k < to.size(); ++k)
+    if (!r.paths[k].found()) out.first.push_back(k), out.second.push_back(to[k]);
+  return out;
+}
+
 // An end that no field reached may still be joined to `from` by edges whose faces have no
 // area (a strip of collinear vertices; a mesh of nothing else): the path along the edges is
 // on the surface too, so it is returned (counted as an edge fallback) rather than no path.
@@ -205,12 +216,8 @@ void edge_safety_net(const TriangleMesh& mesh, const PathTracer& tracer, const E
 // connected" there.
 void edge_paths_for_unreached(const TriangleMesh& mesh, const PathTracer& tracer, const Endpoint& from,
                               const std::vector<Endpoint>& to, PathQueryResult& r) {
-  std::vector<std::size_t> missing;
-  for (std::size_t k = 0; k < to.size(); ++k)
-    if (!r.paths[k].found()) missing.push_back(k);
+  const auto [missing, ends] = unreached(to, r);
   if (missing.empty()) return;
-  std::vector<Endpoint> ends;
-  for (std::size_t k : missing) ends.push_back(to[k]);
   const auto t0 = Clock::now();
   const PathQueryResult edges = edge_paths(mesh, tracer, from, ends);
   r.trace_seconds += seconds_since(t0);
@@ -294,12 +301,8 @@ PathQueryResult query(LazySolver& solver, const PathTracer& tracer, const Endpoi
 
 void astar_for_unreached(LazySolver& solver, const PathTracer& tracer, const Endpoint& from,
                          const std::vector<Endpoint>& to, const PathQueryOptions& options, PathQueryResult& r) {
-  std::vector<std::size_t> missing;
-  for (std::size_t k = 0; k < to.size(); ++k)
-    if (!r.paths[k].found()) missing.push_back(k);
+  const auto [missing, ends] = unreached(to, r);
   if (missing.empty()) return;
-  std::vector<Endpoint> ends;
-  for (std::size_t k : missing) ends.push_back(to[k]);
   PathQueryOptions astar = options;
   astar.method = PathMethod::astar;
   const PathQueryResult g = query(solver, tracer, from, ends, astar);
