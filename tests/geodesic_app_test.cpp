@@ -1,6 +1,7 @@
 // gsp-geodesic end to end: the binary's outputs agree value by value with the library, in the
 // file's own vertex order, in every format; errors follow the CLI contract.
 #include "apps_support.hpp"
+#include "helpers/geodesic_fixtures.hpp"
 #include "helpers/mesh_builders.hpp"
 #include "test_data.hpp"
 
@@ -319,11 +320,42 @@ TEST(GeodesicApp, MethodWindows) {
   const TriangleMesh m = io::read_mesh(sample()).mesh;
   const auto w = io::read_values_txt((dir / "f.txt").string());
   for (std::size_t v = 0; v < w.size(); ++v) EXPECT_GE(w[v], distance(m.positions[v], m.positions[12]) * (1 - 1e-7)) << v;
-  for (const char* bad : {" --source-point 0,0,0", " --source-vertex 1 --max-distance 5", " --source-vertex 1 --separate"})
-    EXPECT_EQ(run(quote(bin(kApp)) + " " + quote(sample()) + bad + " --method windows -o " + quote((dir / "x.txt").string()), dir)
-                  .exit_code,
-              2)
-        << bad;
+  EXPECT_EQ(run(quote(bin(kApp)) + " " + quote(sample()) + " --source-vertex 1 --metric direction=1,0,0:ratio=2 --method windows -o " +
+                    quote((dir / "x.txt").string()),
+                dir)
+                .exit_code,
+            2);
+}
+
+// --method windows takes what GSP's fields take (session 26): a point in a face (on the
+// input's triangles: exact on a plane), --max-distance (the field cut there), --separate and
+// --matrix (equal to the single runs).
+TEST(GeodesicApp, MethodWindowsFacePointsLimitsAndBatches) {
+  ScratchDir dir("geodesic");
+  const TriangleMesh plane = jittered_grid(20, 0.3, 5);
+  io::write_mesh((dir / "plane.off").string(), plane);
+  const std::string app = quote(bin(kApp)) + " " + quote((dir / "plane.off").string()) + " --method windows";
+  const Index f = 100;
+  const std::array<double, 3> b{0.5, 0.2, 0.3};   // --source-face F:U,V takes corners 1 and 2
+  const Vec3 p = SurfacePoint::in_face(f, b).position(plane);
+  ASSERT_EQ(run(app + " --source-face " + std::to_string(f) + ":0.2,0.3 -o " + quote((dir / "p.txt").string()), dir).exit_code, 0);
+  const auto d = io::read_values_txt((dir / "p.txt").string());
+  ASSERT_EQ(d.size(), plane.num_vertices());
+  for (std::size_t v = 0; v < d.size(); ++v) EXPECT_NEAR(d[v], distance(plane.positions[v], p), 1e-7 * (1 + d[v])) << v;
+  ASSERT_EQ(run(app + " --source-face " + std::to_string(f) + ":0.2,0.3 --max-distance 0.3 -o " + quote((dir / "c.txt").string()), dir)
+                .exit_code,
+            0);
+  const auto c = io::read_values_txt((dir / "c.txt").string());
+  std::size_t cut = 0;
+  for (std::size_t v = 0; v < c.size(); ++v) {
+    if (d[v] <= 0.3 * (1 - 1e-6)) EXPECT_EQ(c[v], d[v]) << v;
+    if (d[v] > 0.3 * (1 + 1e-6)) {
+      EXPECT_TRUE(std::isinf(c[v])) << v;
+      ++cut;
+    }
+  }
+  EXPECT_GT(cut, 0u);
+  check_separate_and_matrix(quote(bin(kApp)) + " " + quote(sample()) + " --method windows", "", dir);
 }
 
 }  // namespace

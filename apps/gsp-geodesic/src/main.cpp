@@ -8,12 +8,12 @@
 #include "points.hpp"
 #include "output.hpp"
 #include "sources.hpp"
+#include "windows_method.hpp"
 
 #include <gsp/cli/app.hpp>
 #include <gsp/batch.hpp>
 #include <gsp/cli/parse.hpp>
 #include <gsp/dijkstra.hpp>
-#include <gsp/window_geodesics.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/io/mesh_io.hpp>
 #include <gsp/render/render.hpp>
@@ -28,31 +28,6 @@ namespace {
 
 using namespace gsp;
 using namespace gsp::geodesic_app;
-
-// --method windows: gsp::WindowGeodesics (three windows per face) from vertex sources.
-GeodesicResult run_windows(cli::Context& ctx, const Options& o, const cli::LoadedMesh& in,
-                           const ResolvedSources& src, double max_distance) {
-  if (std::isfinite(max_distance)) throw cli::UsageError("--method windows: --max-distance is not supported");
-  if (o.separate || o.matrix) throw cli::UsageError("--method windows: one field only (no --separate or --matrix)");
-  if (o.input_faces) throw cli::UsageError("--method windows: --input-faces is not supported");
-  std::vector<Index> vertices;
-  for (const Source& s : src.sources) {
-    if (!s.is_vertex() || s.offset != 0)
-      throw cli::UsageError("--method windows takes vertex sources only (--source-vertex)");
-    vertices.push_back(s.element);
-  }
-  WindowOptions wo;
-  wo.windows = 3;
-  ctx.settings()["windows_per_face"] = wo.windows;
-  WindowGeodesics solver = ctx.timer().time("build", [&] { return WindowGeodesics(in.mesh); });
-  GeodesicResult r;
-  WindowStats stats;
-  r.vertex_distance = ctx.timer().time("compute", [&] { return solver.distances(vertices, wo, &stats, &r.vertex_source); });
-  ctx.operations()["window_updates"] = stats.window_updates;
-  r.stats.relaxed_vertices = stats.relaxed;   // report_result writes the stats
-  r.stats.faces_reached = stats.faces_reached;
-  return r;
-}
 
 void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces) {
   report_distances(ctx, r.vertex_distance);
@@ -104,7 +79,8 @@ void run(cli::Context& ctx, const Options& o) {
   const render::RenderOptions preview = render::preview_options(o.preview);
   // Checked before any work, so a typo in the extension costs nothing.
   if (o.separate && o.matrix) throw cli::UsageError("--separate and --matrix exclude each other");
-  if ((o.separate || o.matrix) && o.method != "gsp") throw cli::UsageError("--separate and --matrix need --method gsp");
+  if ((o.separate || o.matrix) && o.method != "gsp" && o.method != "windows")
+    throw cli::UsageError("--separate and --matrix need --method gsp or windows");
   if ((o.separate || o.matrix) && o.preview.wanted()) throw cli::UsageError("--png draws one field: not with --separate or --matrix");
   if (o.matrix) {
     const bool csv = o.output.size() >= 4 && o.output.compare(o.output.size() - 4, 4, ".csv") == 0;
@@ -151,6 +127,7 @@ void run(cli::Context& ctx, const Options& o) {
   GeodesicResult result;
   if (o.method == "windows") {
     result = run_windows(ctx, o, in, src, max_distance);
+    if (o.separate || o.matrix) return;   // written
   } else if (o.method == "dijkstra") {
     DijkstraSolver solver = ctx.timer().time("build", [&] { return DijkstraSolver(in.mesh); });
     result = ctx.timer().time("compute", [&] { return solver.compute(src.sources, max_distance); });

@@ -36,8 +36,10 @@ void add_options(CLI::App& app, Options& o) {
                  "stop at this distance (model units); farther vertices are unreached")
       ->type_name("D");
   app.add_option("--method", o.method,
-                 "gsp (default), windows (three windows per face instead of one virtual source: 3-6x as "
-                 "accurate, 14-22x slower; vertex sources; docs/benchmarks.md), dijkstra (edge graph, for "
+                 "gsp (default), windows (three windows per face instead of one virtual source: about 8x as "
+                 "accurate on the corpus, 18-32x slower; vertex and face sources, --separate, --matrix; "
+                 "docs/benchmarks.md), "
+                 "dijkstra (edge graph, for "
                  "comparison), or graph-gsp (point clouds: virtual sources over the k-NN links instead of GSP "
                  "on the local triangles)")
       ->check(CLI::IsMember({"gsp", "windows", "dijkstra", "graph-gsp"}));
