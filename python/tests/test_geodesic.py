@@ -210,3 +210,19 @@ def test_window_distance_on_plane_and_against_exact(plane, tmp_path):
         gsp.window_distance(V, F, len(V))
     with pytest.raises(ValueError):
         gsp.window_distance(V, F, 0, windows=0)
+    with pytest.raises(ValueError):
+        gsp.window_distance(V, F, 0, max_distance=-1)
+
+
+def test_window_distance_from_face_points_with_a_limit(plane):
+    V, F = plane
+    p = gsp.SurfacePoint(7, (0.2, 0.5, 0.3))
+    x = 0.2 * V[F[7, 0]] + 0.5 * V[F[7, 1]] + 0.3 * V[F[7, 2]]
+    euclid = np.linalg.norm(V - x, axis=1)
+    d, label = gsp.window_distance(V, F, [p, 0], labels=True)
+    np.testing.assert_allclose(d, np.minimum(euclid, np.linalg.norm(V - V[0], axis=1)), rtol=1e-9, atol=1e-12)
+    limit = float(np.median(euclid))
+    cut = gsp.window_distance(V, F, p, max_distance=limit)
+    near = euclid <= limit * (1 - 1e-9)
+    np.testing.assert_allclose(cut[near], euclid[near], rtol=1e-9, atol=1e-12)
+    assert np.all(np.isinf(cut[euclid > limit * (1 + 1e-9)]))
