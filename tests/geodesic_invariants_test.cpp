@@ -213,6 +213,32 @@ TEST(GeodesicInvariants, StrategiesAgree) {
   }
 }
 
+// A step below the keys' rounding (f = 1e-300, or 1e-6 in single precision far out) left the
+// speed limiter's limit where it was, and once it postponed, the same entries were deferred for
+// ever: gsp-geodesic --step 1e-300 hung. The limit now moves past the round's base at least.
+TEST(GeodesicInvariants, StepsBelowRoundingStillEnd) {
+  const TriangleMesh m = curved_mesh();
+  const GeodesicSolver solver(m);
+  GeodesicOptions pq;
+  pq.strategy = Strategy::priority_queue;
+  const auto ref = solver.compute({Source::at_vertex(7)}, pq).vertex_distance;
+  for (Strategy s : {Strategy::speed_limiter, Strategy::speed_limiter_postpone, Strategy::static_postpone,
+                     Strategy::dynamic_postpone, Strategy::hybrid_postpone}) {
+    for (double f : {1e-300, 1e-9}) {
+      for (Precision p : {Precision::single, Precision::double_precision}) {
+        GeodesicOptions o;
+        o.strategy = s;
+        o.f = o.f0 = o.f1 = f;
+        o.precision = p;
+        const auto d = solver.compute({Source::at_vertex(7)}, o).vertex_distance;
+        double sum = 0;
+        for (std::size_t v = 0; v < m.num_vertices(); ++v) sum += relative_error(d[v], ref[v]);
+        EXPECT_LT(sum / double(m.num_vertices()), 2e-3) << "strategy " << int(s) << " f " << f;
+      }
+    }
+  }
+}
+
 TEST(GeodesicInvariants, DisconnectedPartsAreInfinityAndNothingIsNaN) {
   TriangleMesh m = icosphere(2);
   const TriangleMesh other = icosphere(1);

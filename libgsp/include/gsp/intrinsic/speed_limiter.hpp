@@ -17,6 +17,7 @@
 //   void prefetch(const Entry&) const;                  // a hint; may do nothing
 //   template <class Push> void expand(const Entry&, Push&& push);   // push(Entry) per update
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -102,7 +103,14 @@ void run_speed_limiter(Step& step, std::vector<Entry>& a, Real f, SpeedLimiterCo
     if (adaptive && !postpone && expanded >= kSwitchMinExpanded && double(ahead) > kSwitchAheadFraction * double(expanded))
       postpone = counters.switched_to_postpone = true;
     // Skips ahead where nothing lies in the next band (large gaps, source offsets).
-    limit = postpone ? std::max(limit, min_next) + f : limit + f;
+    const Real base = postpone ? std::max(limit, min_next) : limit;
+    Real next = base + f;
+    // A step below the keys' resolution (f lost in rounding: --step 1e-300, or 1e-6 in float
+    // past 16 mean edges) leaves the limit where it is, and a postponing round then defers the
+    // same entries for ever (gsp-geodesic hung): the limit moves at least one representable
+    // value past the round's base.
+    if (!(next > base)) next = std::nextafter(base, inf);
+    limit = next;
     min_next = inf;
   }
 }
