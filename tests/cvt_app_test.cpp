@@ -98,6 +98,17 @@ TEST(CvtApp, EdgeLengthAndGlb) {
   EXPECT_GT(mesh.mesh.num_faces(), 100u);
 }
 
+// Fewer vertices than a component is remeshed with: the remesh has 20, and stderr says why.
+TEST(CvtApp, TooFewVerticesAreRaisedAndSaid) {
+  ScratchDir dir("cvt");
+  const auto in = dir / "sphere.off", out = dir / "r.ply";
+  io::write_mesh(in.string(), icosphere(3));
+  const RunResult r = run(kApp + " " + quote(in.string()) + " --vertices 3 -o " + quote(out.string()), dir, kRemeshLimit);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("3 vertices asked for, 20 sites used: 1 component got 20 sites"), std::string::npos) << r.err;
+  EXPECT_GE(io::read_mesh(out.string()).mesh.num_vertices(), 20u);
+}
+
 // Two spheres and a non-manifold book as a soup (welded by the app): the spheres are
 // remeshed apart, the book is kept and named on stderr; nothing remeshable at all is an error.
 TEST(CvtApp, ComponentsRemeshedApartOrKeptWithAReason) {

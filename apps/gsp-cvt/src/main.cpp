@@ -153,6 +153,14 @@ void run(cli::Context& ctx, const Options& o) {
   const TopologyReport topo_out = analyze_topology(result.mesh, build_connectivity(result.mesh));
   cvt_app::report_remesh(ctx, result, topo_in, topo_out);
   cvt_app::note_kept_components(ctx, result);
+  // Fewer vertices asked for than the components' topology needs: said, not silently raised.
+  std::size_t raised = 0, sites = 0;
+  for (const cvt::ComponentReport& c : result.components)
+    if (c.outcome == cvt::ComponentOutcome::remeshed) sites += c.sites, raised += c.sites == so.min_component_sites;
+  if (o.vertices && raised && sites > o.vertices)
+    ctx.note(std::to_string(o.vertices) + " vertices asked for, " + std::to_string(sites) + " sites used: " +
+             std::to_string(raised) + (raised == 1 ? " component got " : " components got ") +
+             std::to_string(so.min_component_sites) + " sites, the fewest a component is remeshed with");
 
   if (ctx.stats_requested()) {
     auto q = ctx.timer().scope("quality");
