@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace {
 
@@ -204,6 +205,26 @@ TEST(CvtOptions, ContradictionsThrow) {
   for (Vec3& p : flat.positions) p.y = 0;   // no area
   o.sites = 3;
   EXPECT_THROW(cvt::compute_cvt(flat, o), InvalidInput);
+}
+
+// A working mesh beyond the memory the CVT may plan for is refused before it is built, with
+// the sizes in the message (gsp-cvt --vertices 3000000 on a small mesh was killed at 24 GB).
+TEST(CvtOptions, AWorkingMeshBeyondTheMemoryIsRefused) {
+  const TriangleMesh m = test::square_grid(4);
+  cvt::CvtOptions o;
+  o.sites = 2000;
+  o.max_memory = 1000000;   // 1 MB: about 1,500 working faces
+  try {
+    cvt::compute_cvt(m, o);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("cvt: 2000 sites need a working mesh of about"), std::string::npos) << what;
+    EXPECT_NE(what.find("ask for fewer vertices"), std::string::npos) << what;
+  }
+  o.max_memory = 0;   // the machine's: 2000 sites of a square fit
+  o.max_iterations = 1;
+  EXPECT_GE(cvt::compute_cvt(m, o).sites.size(), 2000u);
 }
 
 }  // namespace

@@ -2,10 +2,14 @@
 // error propagation.
 #include "helpers/geodesic_fixtures.hpp"
 
+#include <gsp/available_memory.hpp>
 #include <gsp/batch.hpp>
 #include <gsp/errors.hpp>
 
 #include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
 
 namespace gsp::test {
 namespace {
@@ -46,6 +50,21 @@ TEST(Batch, ErrorsReachTheCaller) {
   EXPECT_THROW(compute_many(solver, {{Source::at_vertex(0)}, {Source::at_vertex(999)}}, {}, 2), InvalidInput);
   EXPECT_EQ(resolve_threads(8, 3), 3u);
   EXPECT_GE(resolve_threads(0, 100), 1u);
+}
+
+// A matrix no machine holds (400,000 rows: 1.3 TB) is refused before any query runs, with the
+// sizes; available_memory() reads this machine's.
+TEST(Batch, AMatrixBeyondTheMemoryIsRefused) {
+  ASSERT_GT(available_memory(), 0u);
+  const GeodesicSolver solver(grid(4));
+  const std::vector<Index> vertices(400000, 0);
+  try {
+    distance_matrix(solver, vertices);
+    FAIL() << "no error";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("a 400000 x 400000 distance matrix: about 1.28e+03 GB needed"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

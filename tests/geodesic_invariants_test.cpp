@@ -195,6 +195,10 @@ TEST(GeodesicInvariants, PreparationOnTwoThreadsGivesTheSameSolver) {
   EXPECT_GT(b.timings().delaunay, 0.0);
 }
 
+// Label correcting converges to (nearly) the same fix point in any order, whatever the step:
+// also below the keys' rounding (f = 1e-300, or 1e-9 in single precision far out), which left
+// the speed limiter's limit where it was, so that once postponing it deferred the same entries
+// for ever (gsp-geodesic --step 1e-300 hung); the limit now moves past the round's base.
 TEST(GeodesicInvariants, StrategiesAgree) {
   const TriangleMesh m = curved_mesh();
   const GeodesicSolver solver(m);
@@ -203,32 +207,11 @@ TEST(GeodesicInvariants, StrategiesAgree) {
   const auto ref = solver.compute({Source::at_vertex(7)}, pq).vertex_distance;
   for (Strategy s : {Strategy::speed_limiter, Strategy::speed_limiter_postpone, Strategy::static_postpone, Strategy::dynamic_postpone,
                      Strategy::hybrid_postpone, Strategy::bfs}) {
-    GeodesicOptions o;
-    o.strategy = s;
-    const auto d = solver.compute({Source::at_vertex(7)}, o).vertex_distance;
-    double sum = 0;
-    for (std::size_t v = 0; v < m.num_vertices(); ++v) sum += relative_error(d[v], ref[v]);
-    // Label correcting converges to (nearly) the same fix point in any order.
-    EXPECT_LT(sum / double(m.num_vertices()), 2e-3) << "strategy " << int(s);
-  }
-}
-
-// A step below the keys' rounding (f = 1e-300, or 1e-6 in single precision far out) left the
-// speed limiter's limit where it was, and once it postponed, the same entries were deferred for
-// ever: gsp-geodesic --step 1e-300 hung. The limit now moves past the round's base at least.
-TEST(GeodesicInvariants, StepsBelowRoundingStillEnd) {
-  const TriangleMesh m = curved_mesh();
-  const GeodesicSolver solver(m);
-  GeodesicOptions pq;
-  pq.strategy = Strategy::priority_queue;
-  const auto ref = solver.compute({Source::at_vertex(7)}, pq).vertex_distance;
-  for (Strategy s : {Strategy::speed_limiter, Strategy::speed_limiter_postpone, Strategy::static_postpone,
-                     Strategy::dynamic_postpone, Strategy::hybrid_postpone}) {
-    for (double f : {1e-300, 1e-9}) {
+    for (double f : {1.0, 1e-9, 1e-300}) {
       for (Precision p : {Precision::single, Precision::double_precision}) {
         GeodesicOptions o;
         o.strategy = s;
-        o.f = o.f0 = o.f1 = f;
+        o.f = f, o.f0 = f, o.f1 = 0.1 * f;
         o.precision = p;
         const auto d = solver.compute({Source::at_vertex(7)}, o).vertex_distance;
         double sum = 0;

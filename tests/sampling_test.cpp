@@ -249,6 +249,26 @@ TEST(SamplingOptions, ContradictionsThrow) {
   EXPECT_THROW(Sampler{flat_line}, InvalidInput);   // no area
 }
 
+// Far more samples than any machine holds are refused at once, with the sizes (a count of 1e8
+// on an 11k-vertex mesh grew past 6 GB in two minutes before); by count and by radius.
+TEST(SamplingOptions, MoreSamplesThanTheMemoryHoldsAreRefused) {
+  const TriangleMesh mesh = test::flat_disk(1.0, 4);
+  Sampler sampler(mesh);
+  for (const bool by_count : {true, false}) {
+    SamplingOptions o;
+    if (by_count)
+      o.count = std::size_t(1e15);
+    else
+      o.radius = 1e-9;   // about 1e17 samples on the unit disc
+    try {
+      sampler.sample(o);
+      FAIL() << "no error, by_count " << by_count;
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find("of memory is available: ask for fewer samples"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(SamplingQuality, PackingRadiusClosedForm) {
   // Hexagonal packing of N discs: A = N * 2 sqrt(3) r^2.
   EXPECT_NEAR(sampling::packing_radius(2 * std::sqrt(3.0) * 100, 100), 1.0, 1e-12);

@@ -5,17 +5,20 @@
 #include "child_faces.hpp"
 #include "feature_sites.hpp"
 #include "junctions.hpp"
+#include "memory_budget.hpp"
 #include "regions.hpp"
 #include "working_geometry.hpp"
 
 #include <gsp/cvt/components.hpp>
 #include <gsp/cvt/cvt.hpp>
+#include <gsp/available_memory.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numeric>
 
@@ -488,6 +491,17 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   }
   // Fewer levels than the last round bisected for (nothing to do when the rounds settled).
   stats.bisections += refine_long_edges(out.working, max_edge * std::pow(2.0, levels), input_cap);
+  // A working mesh the machine cannot hold is refused before it is built (memory_budget.hpp).
+  const double planned_faces = double(out.working.mesh.num_faces()) * std::pow(4.0, levels) + 4.0 * double(n);
+  if (const std::size_t budget = options.max_memory ? options.max_memory : gsp::available_memory();
+      budget && planned_faces * kBytesPerWorkingFace > double(budget)) {
+    char what[240];
+    std::snprintf(what, sizeof what,
+                  "cvt: %zu sites need a working mesh of about %.3g faces, about %.3g GB; %.3g GB of memory is "
+                  "available: ask for fewer vertices",
+                  n, planned_faces, planned_faces * kBytesPerWorkingFace * 1e-9, double(budget) * 1e-9);
+    throw InvalidInput(what);
+  }
   subdivide(out.working, levels);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +

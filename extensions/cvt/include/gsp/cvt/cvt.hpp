@@ -89,6 +89,11 @@ struct CvtOptions {
   // minimiser of the region's energy in the Euclidean approximation). Needed for the dual
   // mesh to have the input's boundary.
   bool boundary_sites = true;
+  // The memory the CVT may plan its working mesh for, in bytes: 0 = what the machine has
+  // available (MemAvailable, or the process's address-space limit if lower). A site count whose
+  // working mesh would need more is refused (InvalidInput) before it is built, instead of
+  // growing until the kernel kills the process.
+  std::size_t max_memory = 0;
   // Sharp features kept (0: off): edges whose faces' normals differ by more than this many
   // degrees form crease curves; each curve at least one site spacing long gets fixed sites at
   // even arc-length steps of about the spacing, from corner to corner (the 1D CVT of the

@@ -1,0 +1,28 @@
+#include <gsp/available_memory.hpp>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+
+namespace gsp {
+
+std::size_t available_memory() {
+  std::size_t bytes = 0;
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::size_t value = 0;
+  std::string unit;
+  while (meminfo >> key >> value >> unit)
+    if (key == "MemAvailable:") {
+      bytes = value * 1024;   // the kernel writes kB
+      break;
+    }
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    bytes = bytes ? std::min<std::size_t>(bytes, limit.rlim_cur) : std::size_t(limit.rlim_cur);
+  return bytes;
+}
+
+}  // namespace gsp
