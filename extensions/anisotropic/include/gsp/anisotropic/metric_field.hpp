@@ -35,8 +35,10 @@ SymmetricTensor face_tensor(const TriangleMesh& mesh, const MetricField& field, 
 
 // Per halfedge 3f+i (corner i -> corner i+1): sqrt(e^T M_f e) with M_f the face's tensor,
 // computed as sqrt(|e|^2 + e^T (M_f - I) e) so that the identity gives exactly the 3D lengths
-// the core computes. Neighbouring faces with different tensors give a shared edge two
-// lengths; each face keeps its own. Validates first (InvalidInput).
+// the core computes. Neighbouring faces with different tensors would give a shared edge two
+// lengths: it takes the larger, and a face whose longest edge then exceeds the sum of the other
+// two gets that sum (docs/anisotropic.md, "Per-face tensors that differ"). Validates first
+// (InvalidInput).
 std::vector<double> metric_edge_lengths(const TriangleMesh& mesh, const MetricField& field);
 
 // Solver options that propagate in the metric: `base` with edge_lengths filled.
