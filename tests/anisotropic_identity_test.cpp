@@ -26,22 +26,24 @@ std::vector<double> plain_lengths(const TriangleMesh& m) {
   return l;
 }
 
-// The straight-line bound is a 3D fact a metric does not have: the solver leaves it out with
-// edge lengths, so the plain runs compared with the metric ones leave it out too.
-GeodesicOptions without_line_bound() {
+// The straight-line bound holds for a metric scaled by the square root of its smallest
+// eigenvalue (anisotropic::line_scale): 1 for identity tensors, so the metric runs keep the
+// plain runs' bound and the update step's test (rule 8) bit for bit; and without both too.
+GeodesicOptions line_bound(bool on) {
   GeodesicOptions go;
-  go.straight_line_bound = false;
-  go.straight_line_test = false;   // neither the bound nor the update step's test (rule 8)
+  go.straight_line_bound = on;
+  go.straight_line_test = on;
   return go;
 }
 
 void expect_same_result(const TriangleMesh& mesh, const MetricField& field, const char* what) {
   const std::vector<Source> sources{Source::at_vertex(0), Source::at_vertex(Index(mesh.num_vertices() / 3), 0.5)};
   for (bool delaunay : {true, false})
-    for (Precision p : {Precision::single, Precision::double_precision}) {
+    for (Precision p : {Precision::single, Precision::double_precision})
+    for (bool bound : {true, false}) {
       SolverOptions so;
       so.intrinsic_delaunay = delaunay;
-      GeodesicOptions go = without_line_bound();
+      GeodesicOptions go = line_bound(bound);
       go.precision = p;
       const GeodesicResult plain = GeodesicSolver(mesh, so).compute(sources, go);
       const GeodesicResult metric = anisotropic::geodesic_distances(mesh, field, sources, go, so);
@@ -53,7 +55,7 @@ void expect_same_result(const TriangleMesh& mesh, const MetricField& field, cons
   // A face-point source runs on the input faces.
   const std::vector<Source> face{Source::in_face(7, {0.2, 0.3, 0.5})};
   EXPECT_EQ(anisotropic::geodesic_distances(mesh, field, face).vertex_distance,
-            GeodesicSolver(mesh).compute(face, without_line_bound()).vertex_distance)
+            GeodesicSolver(mesh).compute(face).vertex_distance)
       << what;
 }
 
@@ -76,12 +78,17 @@ TEST(AnisotropicIdentity, RatioOneIsPlainGspBitForBitOnAFlatGrid) {
 }
 
 TEST(AnisotropicIdentity, GivenLengthsEqualToTheDefaultChangeNothing) {
-  // The core option on its own: the 3D lengths passed explicitly.
+  // The core option on its own: the 3D lengths passed explicitly. Without a line scale the
+  // solver knows no 3D bound for them (neither the bound nor rule 8); with scale 1 it is the
+  // plain solver.
   const TriangleMesh m = fertility();
   SolverOptions so;
   so.edge_lengths = plain_lengths(m);
   EXPECT_EQ(GeodesicSolver(m, so).compute({Source::at_vertex(42)}).vertex_distance,
-            GeodesicSolver(m).compute({Source::at_vertex(42)}, without_line_bound()).vertex_distance);
+            GeodesicSolver(m).compute({Source::at_vertex(42)}, line_bound(false)).vertex_distance);
+  so.edge_lengths_line_scale = 1;
+  EXPECT_EQ(GeodesicSolver(m, so).compute({Source::at_vertex(42)}).vertex_distance,
+            GeodesicSolver(m).compute({Source::at_vertex(42)}).vertex_distance);
 }
 
 }  // namespace

@@ -103,9 +103,9 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   }
   // Last on the values: nothing below the straight line (straight_line_bound.hpp), in layout
   // order (positions and values read in sequence).
-  if (options.straight_line_bound && !custom_lengths)
+  if (options.straight_line_bound && line_scale > 0)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        nv, nullptr, mesh().positions, vmin.data(), vlabel.data(), mean_edge, true, points, threads);
+        nv, nullptr, line_bound_positions(), vmin.data(), vlabel.data(), mean_edge, true, points, threads);
   gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads);
   return_state(std::move(state));
   return result;
@@ -113,8 +113,11 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
 
 std::vector<detail::SourcePoint> GeodesicSolver::Impl::source_points_for(const std::vector<Source>& sources,
                                                                          const GeodesicOptions& options) const {
-  if (custom_lengths || !(options.straight_line_bound || options.straight_line_test)) return {};
-  return detail::source_points(mesh(), maps, sources);
+  if (!(line_scale > 0) || !(options.straight_line_bound || options.straight_line_test)) return {};
+  std::vector<detail::SourcePoint> points = detail::source_points(mesh(), maps, sources);
+  if (line_scale != 1)
+    for (detail::SourcePoint& p : points) p.position = line_scale * p.position;   // as line_bound_positions()
+  return points;
 }
 
 std::vector<float> GeodesicSolver::Impl::line_sources_for(const std::vector<detail::SourcePoint>& points,

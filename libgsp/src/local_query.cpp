@@ -144,10 +144,10 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   gather_reached<Real>(buf.state.data(), ws.vertex_seeds, values);
   if (options.vertex_relaxation) relax_local<Real>(options, buf.state.data(), buf.queue, values, result.stats, lines);
   result.stats.faces_reached = ws.faces.size();
-  if (options.straight_line_bound && !custom_lengths) {
+  if (options.straight_line_bound && line_scale > 0) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
-        ws.vertices.size(), ws.vertices.data(), mesh().positions, ws.vdist.data(), ws.vlabel.data(), mean_edge, false,
-        points);
+        ws.vertices.size(), ws.vertices.data(), line_bound_positions(), ws.vdist.data(), ws.vlabel.data(), mean_edge,
+        false, points);
     // A vertex source's own value is exact and wins, as in compute().
     for (const VertexSeed& vs : ws.vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
   }

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -166,6 +167,9 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
   if (!options.edge_lengths.empty()) detail::validate_halfedge_lengths(given, options.edge_lengths);
   auto t0 = Clock::now();
   custom_lengths = !options.edge_lengths.empty();
+  if (custom_lengths && !(options.edge_lengths_line_scale >= 0 && std::isfinite(options.edge_lengths_line_scale)))
+    throw InvalidInput("edge_lengths_line_scale must be finite and >= 0");
+  line_scale = custom_lengths ? options.edge_lengths_line_scale : 1.0;
   heuristic = options.heuristic;
   if (options.optimize_layout) {
     Layout layout = options.spatial_layout ? gsp::spatial_layout(given) : compute_cache_layout(given);
@@ -254,9 +258,14 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
           timings.delaunay = lap();
         });
   }
-  if (!custom_lengths) {
-    line_centre = bounding_box(mesh()).center();
-    line_positions = detail::scaled_positions(mesh().positions, 1.0 / mean_edge, line_centre);
+  if (line_scale > 0) {
+    if (line_scale != 1) {
+      scaled_vertex_positions.resize(mesh().num_vertices());
+      for (std::size_t v = 0; v < scaled_vertex_positions.size(); ++v)
+        scaled_vertex_positions[v] = line_scale * mesh().positions[v];
+    }
+    line_centre = bounding_box(line_bound_positions()).center();
+    line_positions = detail::scaled_positions(line_bound_positions(), 1.0 / mean_edge, line_centre);
   }
   const auto t2 = Clock::now();
   timings.layout = std::chrono::duration<double>(t1 - t0).count();

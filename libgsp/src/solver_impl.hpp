@@ -182,9 +182,18 @@ struct GeodesicSolver::Impl {
   std::vector<Index> coincident_begin{0}, coincident;
   std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
   double mean_edge = 1;
-  bool custom_lengths = false;     // SolverOptions::edge_lengths given: 3D says nothing about them
-  // The vertices in 3D for the update step's straight-line test (straight_line_bound.hpp:
-  // mean edges from line_centre, floats); empty with caller-supplied lengths.
+  bool custom_lengths = false;     // SolverOptions::edge_lengths given
+  // How 3D bounds the lengths: 1 for 3D lengths, SolverOptions::edge_lengths_line_scale for
+  // caller-supplied ones (0: not at all, no straight-line bound or test).
+  double line_scale = 1;
+  // The vertices in 3D times line_scale, for the straight-line bound (straight_line_bound.hpp);
+  // empty when line_scale is 1 (mesh().positions serve) or 0.
+  std::vector<Vec3> scaled_vertex_positions;
+  const std::vector<Vec3>& line_bound_positions() const {
+    return scaled_vertex_positions.empty() ? mesh().positions : scaled_vertex_positions;
+  }
+  // The same for the update step's straight-line test (mean edges from line_centre, floats);
+  // empty when line_scale is 0.
   std::vector<float> line_positions;
   Vec3 line_centre;
   VisibilityHeuristic heuristic;

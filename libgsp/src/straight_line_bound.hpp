@@ -13,7 +13,9 @@
 // vertices of a few meshes; the bound repairs them wherever they come from, and the count is
 // reported (PropagationStats::raised_to_line) so the cause stays measurable.
 //
-// Not with SolverOptions::edge_lengths: a metric's lengths are not bounded by 3D segments.
+// With SolverOptions::edge_lengths only when edge_lengths_line_scale gives s > 0 (no path
+// shorter than s times its 3D length, as in a metric that dominates s^2 I): the positions and
+// sources are then scaled by s (GeodesicSolver::Impl::line_bound_positions).
 #include "index_maps.hpp"
 #include "nearest_source.hpp"
 #include "parallel_ranges.hpp"
@@ -43,7 +45,8 @@ inline std::vector<SourcePoint> source_points(const TriangleMesh& mesh, const In
 
 // The same bound inside the propagation (update_step.hpp, StraightLineTest): the vertices and
 // the sources in 3D, in mean edge lengths from the centre of the mesh's bounding box, in single
-// precision (4 floats per source: x, y, z, offset). Not for caller-supplied lengths.
+// precision (4 floats per source: x, y, z, offset); for caller-supplied lengths the positions
+// scaled by their line scale first.
 inline std::vector<float> scaled_positions(const std::vector<Vec3>& positions, double scale, Vec3 centre) {
   std::vector<float> out(3 * positions.size());
   for (std::size_t i = 0; i < positions.size(); ++i) {

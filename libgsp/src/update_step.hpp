@@ -50,7 +50,7 @@ struct RemoteStep {
 // What the update step needs to keep its straight updates above the straight line in 3D
 // (UpdateStep::try_update): the propagation's triangles (layout vertex indices) and the
 // vertices and sources of straight_line_bound.hpp's scaled_positions / scaled_sources. All
-// null: no test (caller-supplied lengths, whose distances 3D does not bound).
+// null: no test (caller-supplied lengths whose distances 3D does not bound: no line scale).
 struct StraightLineTest {
   const Triangle* triangles = nullptr;
   const float* positions = nullptr;   // x, y, z per vertex

@@ -138,7 +138,7 @@ void run(cli::Context& ctx, const Options& o) {
     so.spatial_layout = layout.spatial;
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
-    so.edge_lengths = metric_lengths(ctx, metric, in);
+    apply_metric(ctx, metric, in, so);
     so.threads = o.threads == 1 ? 1 : 0;   // the preparation: automatic unless one thread is asked for
     // One field: the solver takes the mesh (a layout reorders it in place instead of copying
     // it) and gives it back for the output. Several: `in` outlives the solver and keeps the

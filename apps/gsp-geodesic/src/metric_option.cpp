@@ -86,10 +86,10 @@ MetricRequest parse_metric(const std::string& spec) {
   return r;
 }
 
-std::vector<double> metric_lengths(cli::Context& ctx, const MetricRequest& request, const cli::LoadedMesh& in) {
-  if (!request.wanted()) return {};
+void apply_metric(cli::Context& ctx, const MetricRequest& request, const cli::LoadedMesh& in, SolverOptions& so) {
+  if (!request.wanted()) return;
   ctx.settings()["metric"] = request.spec;
-  return ctx.timer().time("metric", [&] {
+  ctx.timer().time("metric", [&] {
     anisotropic::MetricField field;
     switch (request.kind) {
       case MetricRequest::Kind::none: break;
@@ -104,7 +104,8 @@ std::vector<double> metric_lengths(cli::Context& ctx, const MetricRequest& reque
         field = anisotropic::curvature_metric(in.mesh, request.ratio, request.smoothing);
         break;
     }
-    return anisotropic::metric_edge_lengths(in.mesh, field);
+    so.edge_lengths = anisotropic::metric_edge_lengths(in.mesh, field);
+    so.edge_lengths_line_scale = anisotropic::line_scale(field);
   });
 }
 

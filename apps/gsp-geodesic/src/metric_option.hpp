@@ -6,6 +6,7 @@
 //   --metric attributes                tensors from the input's tensor_xx ... tensor_zz vertex properties
 //   --metric FILE                      tensors from a text file (docs/anisotropic.md)
 #include <gsp/cli/load.hpp>
+#include <gsp/geodesics.hpp>
 #include <gsp/types.hpp>
 
 #include <string>
@@ -38,9 +39,10 @@ void add_metric_option(CLI::App& app, std::string& spec);
 // equal to "attributes" is a file name.
 MetricRequest parse_metric(const std::string& spec);
 
-// SolverOptions::edge_lengths for the loaded mesh (phase "metric"; settings "metric").
-// Throws IoError / InvalidInput (exit 1): unreadable or malformed file, wrong tensor count,
-// a tensor that is not positive definite, no tensor properties in the input.
-std::vector<double> metric_lengths(cli::Context& ctx, const MetricRequest& request, const cli::LoadedMesh& in);
+// SolverOptions::edge_lengths and edge_lengths_line_scale for the loaded mesh (phase "metric";
+// settings "metric"); nothing when no metric is asked for. Throws IoError / InvalidInput (exit
+// 1): unreadable or malformed file, wrong tensor count, a tensor that is not positive definite,
+// no tensor properties in the input.
+void apply_metric(cli::Context& ctx, const MetricRequest& request, const cli::LoadedMesh& in, SolverOptions& so);
 
 }  // namespace gsp::geodesic_app

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace gsp::anisotropic {
@@ -94,8 +95,19 @@ std::vector<double> metric_edge_lengths(const TriangleMesh& mesh, const MetricFi
   return length;
 }
 
+// Every tensor dominates lambda_min I (a face's average of vertex tensors too: the smallest
+// eigenvalue is concave), and one length per edge only lengthens edges or clamps one to the sum
+// of two others: no path costs less than sqrt(lambda_min) times its 3D length. Identity tensors
+// give exactly 1, and with it the plain solver's bound bit for bit.
+double line_scale(const MetricField& field) {
+  double lambda = std::numeric_limits<double>::infinity();
+  for (const SymmetricTensor& t : field.tensors) lambda = std::min(lambda, t.smallest_eigenvalue());
+  return lambda > 0 && std::isfinite(lambda) ? std::sqrt(lambda) : 0.0;
+}
+
 SolverOptions with_metric(const TriangleMesh& mesh, const MetricField& field, SolverOptions base) {
   base.edge_lengths = metric_edge_lengths(mesh, field);
+  base.edge_lengths_line_scale = line_scale(field);
   return base;
 }
 

@@ -27,6 +27,12 @@ bool SymmetricTensor::is_positive_definite() const {
   return eig[0] > 1e-12 * eig[2] && eig[2] > 0;
 }
 
+double SymmetricTensor::smallest_eigenvalue() const {
+  Eigen::Matrix3d m;
+  m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues()[0];
+}
+
 SymmetricTensor operator+(const SymmetricTensor& a, const SymmetricTensor& b) {
   return {a.xx + b.xx, a.xy + b.xy, a.xz + b.xz, a.yy + b.yy, a.yz + b.yz, a.zz + b.zz};
 }

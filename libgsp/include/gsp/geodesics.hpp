@@ -100,12 +100,13 @@ struct GeodesicOptions {
   bool vertex_relaxation = true;
   // The straight-line bound (docs/gsp-core.md): no distance is shorter than the segment from
   // the nearest source (plus its offset); vertex values below it are raised to it, last.
-  // Ignored with SolverOptions::edge_lengths (a metric is not bounded by 3D segments).
+  // With SolverOptions::edge_lengths only where SolverOptions::edge_lengths_line_scale says how
+  // 3D bounds them (scaled by it).
   bool straight_line_bound = true;
   // The same bound inside the update step (docs/gsp-core.md, rule 8): a straight update that
   // would put a face's new corner below the segment from its source bends instead, so the
   // wrong value is not passed on. Off only to measure what it changes (gsp-bench's
-  // gsp-no-line-test). Ignored with SolverOptions::edge_lengths.
+  // gsp-no-line-test). With SolverOptions::edge_lengths as the bound above.
   bool straight_line_test = true;
 };
 
@@ -222,6 +223,12 @@ struct SolverOptions {
   // longest edge. With lengths, compute() refuses want_face_sources and goal_directed (both 3D
   // constructions); distances, labels and targets work as usual.
   std::vector<double> edge_lengths;
+  // With edge_lengths: a scale s > 0 such that no path is shorter in those lengths than s times
+  // its 3D length (a metric whose tensors all dominate s^2 I: gsp::anisotropic passes the square
+  // root of their smallest eigenvalue). The straight-line bound and the update step's test then
+  // hold for them too, scaled: no distance below s |x - source| (+ offset). 0: the lengths are
+  // not bounded by 3D (both off, as before). Ignored without edge_lengths (s = 1 there).
+  double edge_lengths_line_scale = 0;
   // Threads of the preparation: 0 = automatic (two on meshes of kParallelMinFaces faces or
   // more, outside a parallel region: the lengths beside the connectivity, the vertices'
   // analysis beside the intrinsic Delaunay flips), 1 = one. The result is the same either way.

@@ -41,7 +41,13 @@ SymmetricTensor face_tensor(const TriangleMesh& mesh, const MetricField& field, 
 // (InvalidInput).
 std::vector<double> metric_edge_lengths(const TriangleMesh& mesh, const MetricField& field);
 
-// Solver options that propagate in the metric: `base` with edge_lengths filled.
+// sqrt of the smallest eigenvalue over the field's tensors: no path costs less in the metric
+// than this times its 3D length (SolverOptions::edge_lengths_line_scale), so the core's
+// straight-line bound holds, scaled. 0 for an empty field.
+double line_scale(const MetricField& field);
+
+// Solver options that propagate in the metric: `base` with edge_lengths and
+// edge_lengths_line_scale filled.
 SolverOptions with_metric(const TriangleMesh& mesh, const MetricField& field, SolverOptions base = {});
 
 // One-off: geodesic distances in the metric (result fields as gsp::geodesic_distances; no

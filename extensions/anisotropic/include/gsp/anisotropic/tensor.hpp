@@ -21,6 +21,8 @@ struct SymmetricTensor {
   double quadratic(Vec3 e) const { return dot(e, e) + excess(e); }
   // All six entries finite and M positive definite (Sylvester's leading minors, scaled).
   bool is_positive_definite() const;
+  // The smallest eigenvalue: every step e costs at least sqrt(it) |e| in this metric.
+  double smallest_eigenvalue() const;
 };
 
 SymmetricTensor operator+(const SymmetricTensor& a, const SymmetricTensor& b);
