@@ -2,7 +2,10 @@
 
 #include <sys/resource.h>
 
+#include <gsp/errors.hpp>
+
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -23,6 +26,15 @@ std::size_t available_memory() {
   if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
     bytes = bytes ? std::min<std::size_t>(bytes, limit.rlim_cur) : std::size_t(limit.rlim_cur);
   return bytes;
+}
+
+void require_memory(const std::string& what, double bytes) {
+  const std::size_t budget = available_memory();
+  if (!budget || !(bytes > double(budget))) return;
+  char message[120];
+  std::snprintf(message, sizeof message, ": about %.3g GB needed; %.3g GB of memory is available: ask for fewer",
+                bytes * 1e-9, double(budget) * 1e-9);
+  throw InvalidInput(what + message);
 }
 
 }  // namespace gsp

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cstdio>
 #include <exception>
 #include <mutex>
 #include <string>
@@ -59,28 +58,13 @@ void parallel_for(std::size_t n, unsigned threads, const std::function<void(std:
   if (failure) std::rethrow_exception(failure);
 }
 
-namespace {
-
-// Results far beyond the memory available are refused before the queries run
-// (gsp/available_memory.hpp): `what` names them, `bytes` is what they need.
-void check_memory(const char* what, double bytes) {
-  const std::size_t budget = available_memory();
-  if (!budget || !(bytes > double(budget))) return;
-  char message[240];
-  std::snprintf(message, sizeof message, "%s: about %.3g GB needed; %.3g GB of memory is available: ask for fewer", what,
-                bytes * 1e-9, double(budget) * 1e-9);
-  throw InvalidInput(message);
-}
-
-}  // namespace
 
 std::vector<GeodesicResult> compute_many(const GeodesicSolver& solver,
                                          const std::vector<std::vector<Source>>& queries,
                                          const GeodesicOptions& options, unsigned threads) {
   // Each result holds a distance and a label per vertex (and per face when asked for).
   const double per_result = 12.0 * double(solver.num_vertices()) + (options.want_face_distances ? 12.0 * double(solver.num_faces()) : 0.0);
-  const std::string what = std::to_string(queries.size()) + " fields";
-  check_memory(what.c_str(), per_result * double(queries.size()));
+  require_memory(std::to_string(queries.size()) + " fields", per_result * double(queries.size()));
   std::vector<GeodesicResult> results(queries.size());
   parallel_for(queries.size(), resolve_threads(threads, queries.size()),
                [&](std::size_t i) { results[i] = solver.compute(queries[i], options); });
@@ -90,8 +74,7 @@ std::vector<GeodesicResult> compute_many(const GeodesicSolver& solver,
 std::vector<double> distance_matrix(const GeodesicSolver& solver, const std::vector<Index>& vertices,
                                     const GeodesicOptions& options, unsigned threads) {
   const std::size_t n = vertices.size();
-  const std::string what = "a " + std::to_string(n) + " x " + std::to_string(n) + " distance matrix";
-  check_memory(what.c_str(), 8.0 * double(n) * double(n));
+  require_memory("a " + std::to_string(n) + " x " + std::to_string(n) + " distance matrix", 8.0 * double(n) * double(n));
   std::vector<double> matrix(n * n);
   parallel_for(n, resolve_threads(threads, n), [&](std::size_t i) {
     const GeodesicResult r = solver.compute({Source::at_vertex(vertices[i])}, options);

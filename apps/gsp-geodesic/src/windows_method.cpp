@@ -3,6 +3,7 @@
 #include "batch_output.hpp"
 #include "output.hpp"
 
+#include <gsp/available_memory.hpp>
 #include <gsp/batch.hpp>
 #include <gsp/cli/app.hpp>
 #include <gsp/window_geodesics.hpp>
@@ -54,6 +55,8 @@ GeodesicResult run_windows(cli::Context& ctx, const Options& o, const cli::Loade
   // A field per source, in parallel (WindowGeodesics::field is const: each call has its own
   // state), as GSP's compute_many.
   const std::size_t n = src.sources.size();
+  // Every field is held until written (a distance and a label per vertex), as compute_many's.
+  require_memory(std::to_string(n) + " fields", 12.0 * double(in.mesh.num_vertices()) * double(n));
   const unsigned threads = resolve_threads(o.threads, n);
   ctx.settings()["threads"] = threads;
   std::vector<std::vector<double>> distance(n);

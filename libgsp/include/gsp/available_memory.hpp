@@ -5,6 +5,7 @@
 // killed the process (gsp-cvt --vertices 3000000 on an 11k-vertex cow: 24 GB, signal 9), where
 // a refusal up front, with the sizes, is what a user needs.
 #include <cstddef>
+#include <string>
 
 namespace gsp {
 
@@ -12,5 +13,9 @@ namespace gsp {
 // RLIMIT_AS when one is set (gsp-batch --max-memory). 0 when neither can be read: no limit
 // known, no check.
 std::size_t available_memory();
+
+// Throws InvalidInput "`what`: about X GB needed; Y GB of memory is available: ask for fewer"
+// when `bytes` exceeds available_memory() (nothing when that is unknown).
+void require_memory(const std::string& what, double bytes);
 
 }  // namespace gsp
