@@ -28,13 +28,13 @@ std::size_t available_memory() {
   return bytes;
 }
 
-void require_memory(const std::string& what, double bytes) {
-  const std::size_t budget = available_memory();
+void require_memory(const std::string& what, double bytes, const std::string& fewer, std::size_t budget) {
+  if (!budget) budget = available_memory();
   if (!budget || !(bytes > double(budget))) return;
   char message[120];
   std::snprintf(message, sizeof message, ": about %.3g GB needed; %.3g GB of memory is available: ask for fewer",
                 bytes * 1e-9, double(budget) * 1e-9);
-  throw InvalidInput(what + message);
+  throw InvalidInput(what + message + (fewer.empty() ? "" : " " + fewer));
 }
 
 }  // namespace gsp

@@ -166,6 +166,7 @@ class Propagation {
       ++stats_.relaxation_rounds;
       stats_.pseudo_sources += lowered.size();
       changed_vertices_.clear();
+      recording_ = true;   // the next relaxation starts where the next round's waves lowered values
       for (Index v : lowered) bridge_pending_.push_back(v);
       cross_bridges();
       from = &changed_vertices_;
@@ -254,7 +255,7 @@ class Propagation {
       const double d = c == bent ? bent_value : at[c];
       if (!(d < distance_[t[c]])) continue;
       distance_[t[c]] = d, segment_[t[c]] = w.segment;
-      changed_vertices_.push_back(t[c]);
+      if (recording_) changed_vertices_.push_back(t[c]);
       if (bridge_[t[c]]) bridge_pending_.push_back(t[c]);
     }
     queue_.push({key, f, id});
@@ -407,6 +408,7 @@ class Propagation {
   std::vector<double> length_;       // per halfedge, snapped (the relaxation's edges)
   std::vector<Index> bridge_pending_;
   std::vector<Index> changed_vertices_;   // lowered by the waves since the last relaxation
+  bool recording_ = false;                 // from the second round on (the first relaxes every edge)
   std::vector<FaceWaves> faces_;
   std::vector<double> distance_;
   std::vector<Index> segment_;

@@ -42,19 +42,6 @@ constexpr double kBytesPerSample = 1200;
 // estimate of a radius's count, on the low side: no feasible run is refused).
 constexpr double kPoissonShareOfPacking = 0.5;
 
-// Far more samples than the machine can hold are refused up front (gsp/available_memory.hpp):
-// gsp-sample --count 100000000 on an 11k-vertex mesh grew past 6 GB in two minutes.
-void check_memory(double samples) {
-  const std::size_t budget = available_memory();
-  if (!budget || !(samples * kBytesPerSample > double(budget))) return;
-  char what[200];
-  std::snprintf(what, sizeof what,
-                "sampling: about %.3g samples need about %.3g GB; %.3g GB of memory is available: ask for fewer samples "
-                "(or a larger radius)",
-                samples, samples * kBytesPerSample * 1e-9, double(budget) * 1e-9);
-  throw InvalidInput(what);
-}
-
 }  // namespace
 
 SamplingResult Sampler::sample(const SamplingOptions& options) const {
@@ -63,7 +50,13 @@ SamplingResult Sampler::sample(const SamplingOptions& options) const {
   if (by_radius && !(std::isfinite(options.radius) && options.radius > 0))
     throw InvalidInput("sampling: the radius must be finite and > 0");
   if (!(options.count_tolerance >= 0)) throw InvalidInput("sampling: the count tolerance must be >= 0");
-  check_memory(by_count ? double(options.count) : kPoissonShareOfPacking * area() / (2 * std::sqrt(3.0) * options.radius * options.radius));
+  // Far more samples than the machine can hold are refused up front: gsp-sample --count
+  // 100000000 on an 11k-vertex mesh grew past 6 GB in two minutes.
+  const double samples =
+      by_count ? double(options.count) : kPoissonShareOfPacking * area() / (2 * std::sqrt(3.0) * options.radius * options.radius);
+  char what[80];
+  std::snprintf(what, sizeof what, "sampling: about %.3g samples", samples);
+  require_memory(what, samples * kBytesPerSample, "samples (or a larger radius)");
   if (options.mode == Mode::farthest) return farthest(options);
   if (options.max_rejections == 0) throw InvalidInput("sampling: max_rejections must be > 0");
   return by_radius ? poisson(options.radius, options) : poisson_count(options);

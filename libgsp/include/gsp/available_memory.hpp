@@ -14,8 +14,9 @@ namespace gsp {
 // known, no check.
 std::size_t available_memory();
 
-// Throws InvalidInput "`what`: about X GB needed; Y GB of memory is available: ask for fewer"
-// when `bytes` exceeds available_memory() (nothing when that is unknown).
-void require_memory(const std::string& what, double bytes);
+// Throws InvalidInput "`what`: about X GB needed; Y GB of memory is available: ask for fewer
+// `fewer`" when `bytes` exceeds `budget` (0: available_memory(); nothing when that is unknown).
+// The one check of every module that sizes a run from an argument.
+void require_memory(const std::string& what, double bytes, const std::string& fewer = "", std::size_t budget = 0);
 
 }  // namespace gsp
