@@ -71,6 +71,8 @@ def run_mesh(args, path):
                str(args.hausdorff_samples), "--stats", stats, "--quiet"]
         if args.feature_angle is not None:
             cmd += ["--feature-angle", str(args.feature_angle)]
+        if args.cvt_tolerance is not None:
+            cmd += ["--cvt-tolerance", str(args.cvt_tolerance)]
         start = time.monotonic()
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
@@ -255,6 +257,7 @@ def main():
     ap.add_argument("--markdown", help="write the aggregate here ('-': stdout)")
     ap.add_argument("--compare", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin",
                                                       "gsp-cvt-compare"))
+    ap.add_argument("--cvt-tolerance", type=float, help="gsp-cvt's --tolerance (default: gsp-cvt's default)")
     ap.add_argument("--feature-angle", type=float, help="gsp-cvt's --feature-angle (default: gsp-cvt's default)")
     ap.add_argument("--timeout", type=float, default=300, help="seconds per mesh (default 300)")
     ap.add_argument("--hausdorff-samples", type=int, default=50000)

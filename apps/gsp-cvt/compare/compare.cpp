@@ -4,6 +4,7 @@
 // does not use it. A method that throws is a row with its reason, so a corpus run
 // (scripts/cvt_corpus.py) loses no mesh to one method's failure.
 #include "measure.hpp"
+#include "memory_cap.hpp"
 
 #include <gsp/adapters/cgal.hpp>
 #include <gsp/cli/app.hpp>
@@ -22,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -35,6 +37,7 @@ struct Options {
   std::size_t vertices = 0;
   int cvt_iterations = 50, cgal_iterations = 5, count_runs = 3;
   double feature_angle = 0;
+  double cvt_tolerance = cvt::CvtOptions().tolerance;
   std::size_t hausdorff_samples = 200000;
   cli::LoadOptions load;
 };
@@ -87,8 +90,18 @@ Row cgal_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) 
       throw std::runtime_error("not run: " + std::to_string(folded) +
                                " edges between two faces on the same three vertices (CGAL crashes there)");
     const auto t0 = Clock::now();
-    PMP::isotropic_remeshing(faces(c.mesh), length, c.mesh, CGAL::parameters::number_of_iterations(o.cgal_iterations));
-    c.mesh.collect_garbage();
+    {
+      const cvt_compare::AddressSpaceCap cap;
+      try {
+        PMP::isotropic_remeshing(faces(c.mesh), length, c.mesh, CGAL::parameters::number_of_iterations(o.cgal_iterations));
+        c.mesh.collect_garbage();
+      } catch (const std::bad_alloc&) {
+        char what[160];
+        std::snprintf(what, sizeof what, "ran out of memory (capped at %.3g GB, 90%% of what was free when it started)",
+                      double(cap.headroom()) / 1e9);
+        throw std::runtime_error(what);
+      }
+    }
     row.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     row.mesh = adapters::from_cgal(c.mesh);
     row.note = "target edge " + std::to_string(length) + ", " + std::to_string(o.cgal_iterations) + " iterations";
@@ -104,6 +117,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   cvt::SurfaceRemeshOptions so;
   so.cvt.sites = wanted;
   so.cvt.max_iterations = o.cvt_iterations;
+  so.cvt.tolerance = o.cvt_tolerance;
   so.cvt.feature_angle = o.feature_angle;
   const auto t0 = Clock::now();
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
@@ -215,6 +229,8 @@ int main(int argc, char** argv) {
         app.add_option("INPUT", o.input, "input mesh")->required();
         app.add_option("--vertices", o.vertices, "vertex count for both methods")->required()->check(CLI::PositiveNumber);
         app.add_option("--cvt-iterations", o.cvt_iterations, "gsp-cvt Lloyd iteration cap (default 50)");
+        app.add_option("--cvt-tolerance", o.cvt_tolerance, "gsp-cvt's --tolerance (default: gsp-cvt's)")
+            ->check(CLI::NonNegativeNumber);
         app.add_option("--feature-angle", o.feature_angle, "gsp-cvt's --feature-angle (default 0: off)");
         app.add_option("--cgal-iterations", o.cgal_iterations, "CGAL remeshing iterations (default 5)");
         app.add_option("--count-runs", o.count_runs, "CGAL runs to match the vertex count (default 3; the last is timed)")
