@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
+#include <array>
+#include <cstdint>
 
 namespace gsp::cvt::detail {
 
@@ -78,21 +78,42 @@ double fan_quality(const std::vector<Index>& seq, std::size_t s, std::size_t cou
   return worst;
 }
 
+// A triangle on the same three sites as an earlier one (in the order they were made) is
+// dropped, counted, and its vertex marked as trouble.
+void drop_repeated_triangles(DualTriangles& d) {
+  std::vector<std::pair<std::array<Index, 3>, Index>> keys(d.triangles.size());
+  for (std::size_t t = 0; t < keys.size(); ++t) {
+    keys[t] = {d.triangles[t], Index(t)};
+    std::sort(keys[t].first.begin(), keys[t].first.end());
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> repeated(keys.size(), false);
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].first == keys[i - 1].first) repeated[keys[i].second] = true;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < d.triangles.size(); ++t) {
+    if (repeated[t]) {
+      d.stats.duplicate_triangles++;
+      d.trouble_vertices.push_back(d.junction_vertex[t]);
+      continue;
+    }
+    d.triangles[kept] = d.triangles[t];
+    d.junction_vertex[kept] = d.junction_vertex[t];
+    ++kept;
+  }
+  d.triangles.resize(kept);
+  d.junction_vertex.resize(kept);
+}
+
 }  // namespace
 
 DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, const std::vector<Index>& label,
                              const std::vector<Vec3>& sites) {
   DualTriangles d;
-  std::set<std::array<Index, 3>> seen;
   Index vertex = 0;
+  // Every triangle is kept here; one that repeats an earlier one's three sites is dropped
+  // after the scan (below), by sorting, not by a tree of the triangles seen.
   auto emit = [&](Index a, Index b, Index c) {
-    std::array<Index, 3> key{a, b, c};
-    std::sort(key.begin(), key.end());
-    if (!seen.insert(key).second) {
-      d.stats.duplicate_triangles++;
-      d.trouble_vertices.push_back(vertex);
-      return;
-    }
     d.triangles.push_back({a, b, c});
     d.junction_vertex.push_back(vertex);
   };
@@ -156,18 +177,25 @@ DualTriangles dual_triangles(const TriangleMesh& m, const Connectivity& conn, co
       }
     }
   }
+  drop_repeated_triangles(d);
   return d;
 }
 
 std::vector<Index> overused_edge_vertices(const DualTriangles& d) {
-  std::map<std::pair<Index, Index>, int> uses;
-  std::vector<Index> out;
+  // (edge, triangle) pairs sorted by edge, then triangle: the third and later triangles of an
+  // edge, in the order they were made, are the ones past its two.
+  std::vector<std::pair<std::uint64_t, Index>> uses;
+  uses.reserve(3 * d.triangles.size());
   for (std::size_t t = 0; t < d.triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       Index a = d.triangles[t][i], b = d.triangles[t][(i + 1) % 3];
       if (a > b) std::swap(a, b);
-      if (++uses[{a, b}] > 2) out.push_back(d.junction_vertex[t]);
+      uses.push_back({(std::uint64_t(a) << 32) | b, Index(t)});
     }
+  std::sort(uses.begin(), uses.end());
+  std::vector<Index> out;
+  for (std::size_t i = 2; i < uses.size(); ++i)
+    if (uses[i].first == uses[i - 2].first) out.push_back(d.junction_vertex[uses[i].second]);
   return out;
 }
 
