@@ -1,13 +1,16 @@
 #!/usr/bin/python3
 """Runs every app on every mesh of one or more folders and reports what breaks the CLI contract:
-an exit by a signal (a crash), an exit code other than 0, 1 (bad input, one line on stderr) and
-3 (gsp-path: no path), a run past the time limit, or exit 1 without exactly one stderr line.
+an exit by a signal (a crash), an exit code other than 0, 1 (bad input, one line on stderr), 2
+(a usage error: an option the input cannot take, as --metric on a point cloud) and 3 (gsp-path:
+no path), a run past the time limit, or exit 1 without exactly one stderr line.
 
-    scripts/apps_sweep.py ../shared/data/corpus ../shared/data/meshes [--bin build/bin] [--timeout 120]
+    scripts/apps_sweep.py ../shared/data/corpus ../shared/data/meshes [--bin build/bin] [--timeout 120] [--all]
 
 Prints one line per finding and a count at the end; exit status 1 when there is any. Session
 22's sweep of the 94 corpus and shared files found gsp-cvt-compare's CGAL crash on
-libigl_degenerated.obj and the point clouds' --separate usage error (both fixed).
+libigl_degenerated.obj and the point clouds' --separate usage error (both fixed). Session 27's
+with --all (20 jobs per file) found gsp-path's crash from a point in a zero-area face at an
+unwelded pole (trimesh_capsule.obj; fixed, tests/pathfinding_pole_test.cpp).
 """
 import argparse
 import os
@@ -33,18 +36,40 @@ def jobs(out):
     ]
 
 
+def more_jobs(out):
+    """--all: the other methods, sources and apps (windows, line sources, metrics, point
+    domain, farthest-point sampling, remeshing)."""
+    o = lambda name: os.path.join(out, name)
+    return [
+        ("geodesic-windows", "gsp-geodesic", ["--source-vertex", "0", "--method", "windows", "-o", o("w.ply")]),
+        ("geodesic-face-point", "gsp-geodesic", ["--source-face", "0:0.3,0.3", "--labels", "-o", o("f.ply")]),
+        ("geodesic-boundary", "gsp-geodesic", ["--source-boundary", "-o", o("b.ply")]),
+        ("geodesic-edges", "gsp-geodesic", ["--source-edges", "0-1", "-o", o("e.ply")]),
+        ("geodesic-metric", "gsp-geodesic", ["--source-vertex", "0", "--metric", "direction=1,0,0:ratio=3", "-o", o("m.ply")]),
+        ("geodesic-curvature", "gsp-geodesic", ["--source-vertex", "0", "--metric", "curvature:ratio=2", "-o", o("c.ply")]),
+        ("geodesic-points", "gsp-geodesic", ["--source-vertex", "0", "--domain", "points", "-o", o("pt.ply")]),
+        ("geodesic-input-faces", "gsp-geodesic", ["--source-vertex", "0", "--input-faces", "--precision", "single", "-o", o("i.ply")]),
+        ("path-points", "gsp-path", ["--from", "0:0.2,0.2", "--to", "1e9,1e9,1e9", "2", "-o", o("pp.json")]),
+        ("path-settle", "gsp-path", ["--from", "0", "--to", "2", "--method", "settle", "-o", o("ps.json")]),
+        ("sample-farthest", "gsp-sample", ["--count", "300", "--mode", "farthest", "-o", o("sf.ply")]),
+        ("cvt", "gsp-cvt", ["--vertices", "400", "--feature-angle", "40", "-o", o("cvt.ply")]),
+    ]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("folders", nargs="+")
     ap.add_argument("--bin", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "bin"))
     ap.add_argument("--timeout", type=float, default=120)
+    ap.add_argument("--all", action="store_true", help="also the other methods, sources and apps (more_jobs)")
     a = ap.parse_args()
+    job_list = lambda out: jobs(out) + (more_jobs(out) if a.all else [])
     files = sorted(os.path.join(f, n) for f in a.folders for n in os.listdir(f) if n.lower().endswith(MESH_EXTENSIONS))
     findings = 0
     with tempfile.TemporaryDirectory() as out:
         for i, path in enumerate(files):
             print(f"[{i + 1}/{len(files)}] {os.path.basename(path)}", file=sys.stderr, end="\r")
-            for name, app, args in jobs(out):
+            for name, app, args in job_list(out):
                 cmd = [os.path.join(a.bin, app), path, "-q"] + args
                 if app == "gsp-info":
                     cmd.remove("-q")
@@ -56,11 +81,11 @@ def main():
                     findings += 1
                     continue
                 err = [l for l in p.stderr.splitlines() if l.strip()]
-                bad = p.returncode < 0 or p.returncode not in (0, 1, 3) or (p.returncode == 1 and len(err) != 1)
+                bad = p.returncode < 0 or p.returncode not in (0, 1, 2, 3) or (p.returncode == 1 and len(err) != 1)
                 if bad:
                     print(f"{os.path.basename(path)} {name}: exit {p.returncode}: {' | '.join(err)[:200]}")
                     findings += 1
-    print(f"{len(files)} files, {len(jobs(''))} jobs each: {findings} finding(s)")
+    print(f"{len(files)} files, {len(job_list(''))} jobs each: {findings} finding(s)")
     return 1 if findings else 0
 
 

@@ -1,5 +1,6 @@
 # Tests of gsp::pathfinding (path tracing, goal-directed queries) and the gsp-path app.
 gsp_test(pathfinding_trace_test SOURCES pathfinding_trace_test.cpp DEPS gsp::pathfinding gsp::io)
+gsp_test(pathfinding_pole_test SOURCES pathfinding_pole_test.cpp DEPS gsp::pathfinding)
 if(GSP_WITH_CGAL)
   gsp_test(pathfinding_exact_test SOURCES pathfinding_exact_test.cpp DEPS gsp::pathfinding gsp::io gsp::reference)
 endif()

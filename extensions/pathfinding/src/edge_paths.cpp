@@ -51,15 +51,16 @@ Index predecessor(const TriangleMesh& mesh, const Connectivity& conn, const std:
   return next;
 }
 
-// Of the vertices joined to u by edges of length zero (breadth first), the first that is the
-// path's start `goal` or has a predecessor; kInvalidIndex when none.
+// Of the vertices joined to u by edges of length zero (breadth first), the first where the
+// path starts (`is_start`) or that has a predecessor; kInvalidIndex when none.
+template <class IsStart>
 Index copy_with_predecessor(const TriangleMesh& mesh, const Connectivity& conn, const std::vector<double>& d, Index u,
-                            Index goal) {
+                            IsStart&& is_start) {
   std::vector<Index> queue{u};
   std::unordered_set<Index> seen{u};
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const Index x = queue[i];
-    if (x != u && (x == goal || predecessor(mesh, conn, d, x) != kInvalidIndex)) return x;
+    if (x != u && (is_start(x) || predecessor(mesh, conn, d, x) != kInvalidIndex)) return x;
     for (Index k = conn.vertex_corner_begin[x]; k < conn.vertex_corner_begin[x + 1]; ++k)
       for (Index w : mesh.triangles[face_of(conn.vertex_corners[k])])
         if (!seen.count(w) && mesh.positions[w].x == mesh.positions[x].x && mesh.positions[w].y == mesh.positions[x].y &&
@@ -88,21 +89,25 @@ GeodesicPath backtrack(const TriangleMesh& mesh, const Connectivity& conn, const
     if (std::isfinite(best)) path.points.push_back(vertex_point(mesh, conn, u, t[0] == u ? t[1] : t[0]));
   }
   if (!std::isfinite(path.field_distance)) return {};
+  // Where the path starts: the source vertex, or a corner of the source's face whose distance
+  // is the straight line from the source point.
+  auto is_start = [&](Index x) {
+    if (from.is_vertex()) return x == from.element;
+    const Triangle& t = mesh.triangles[from.element];
+    const bool corner = t[0] == x || t[1] == x || t[2] == x;
+    return corner && std::abs(d[x] - distance(mesh.positions[x], from_pos)) <= 1e-12 * (1 + d[x]);
+  };
   for (std::size_t steps = 0; steps <= mesh.num_vertices(); ++steps) {
-    if (from.is_vertex() && u == from.element) break;
-    if (!from.is_vertex()) {
-      const Triangle& t = mesh.triangles[from.element];
-      const bool corner = t[0] == u || t[1] == u || t[2] == u;
-      if (corner && std::abs(d[u] - distance(mesh.positions[u], from_pos)) <= 1e-12 * (1 + d[u])) {
-        path.points.push_back({from, from_pos});
-        break;
-      }
+    if (is_start(u)) {
+      if (!from.is_vertex()) path.points.push_back({from, from_pos});
+      break;
     }
     Index next = predecessor(mesh, conn, d, u);
     if (next == kInvalidIndex) {
       // u's distance came over edges of length zero (the poles of a UV sphere stored with
-      // zero-area faces: a chain of copies of one point): go to the copy that has one.
-      const Index x = copy_with_predecessor(mesh, conn, d, u, from.is_vertex() ? from.element : kInvalidIndex);
+      // zero-area faces: a chain of copies of one point): go to the copy that has one, or
+      // that is where the path starts (a corner of a source face at the pole).
+      const Index x = copy_with_predecessor(mesh, conn, d, u, is_start);
       if (x == kInvalidIndex) throw Error("edge path: no predecessor at vertex " + std::to_string(u));
       next = x;
     }

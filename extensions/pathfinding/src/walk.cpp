@@ -63,7 +63,13 @@ Walker Walk::start(const Endpoint& end) {
     const Index corner = Index(std::max_element(w.bary.begin(), w.bary.end()) - w.bary.begin());
     emit(w);
     w.face = kInvalidIndex;
-    step_vertex(mesh_.triangles[end.element][corner], w);
+    if (step_vertex(mesh_.triangles[end.element][corner], w) == VertexStep::source) {
+      // That corner is the source (an unwelded copy of it, as at a capsule's pole): the walk
+      // ends at the corner, a point of the end's own face (a walker without a face crashed the
+      // shortening and would have written face 4294967295).
+      w.face = end.element;
+      w.bary = corner_bary(corner);
+    }
   }
   return w;
 }
