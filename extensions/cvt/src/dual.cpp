@@ -98,6 +98,7 @@ RemeshResult restricted_delaunay(const CvtResult& cvt, const RemeshOptions& opti
     rp.locked = lock;
     const detail::SettledRefinement added = detail::refine_and_settle(r.mesh, surface, curves, sp, rp);
     r.stats.far_point_insertions = added.inserted;
+    r.stats.far_point_attempts = added.attempts;
     r.stats.flips += added.flips;
     r.stats.smoothing_moves += added.moves;
     r.stats.smoothing_boundary_moves += added.boundary_moves;

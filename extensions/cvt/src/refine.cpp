@@ -321,6 +321,7 @@ SettledRefinement refine_and_settle(TriangleMesh& mesh, const TriangleMesh& surf
     params.slack_deg = attempt < 2 ? 10.0 : 0.0;
     const RefineResult added = insert_at_far_points(mesh, surface, params);
     if (added.inserted == 0) break;
+    ++out.attempts;
     SmoothParams again = settle;
     again.only = &added.touched;
     const std::vector<bool> movable = grow_by_rings(mesh, added.touched, kSettleRings);

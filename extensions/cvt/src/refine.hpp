@@ -50,6 +50,7 @@ RefineResult insert_at_far_points(TriangleMesh& mesh, const TriangleMesh& surfac
 
 struct SettledRefinement {
   std::size_t inserted = 0, flips = 0, moves = 0, boundary_moves = 0;
+  std::size_t attempts = 0;   // insertion rounds made (those put back included)
 };
 
 // insert_at_far_points with 10 degrees of slack, then the vertex moves within two rings of the

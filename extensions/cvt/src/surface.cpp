@@ -61,6 +61,7 @@ void add_stats(RemeshStats& sum, const RemeshStats& s) {
   sum.boundary_snaps += s.boundary_snaps;
   sum.pulls += s.pulls;
   sum.far_point_insertions += s.far_point_insertions;
+  sum.far_point_attempts += s.far_point_attempts;
 }
 
 // The input's own faces `faces` as a mesh (what a kept component writes: its vertices not

@@ -82,6 +82,7 @@ struct RemeshStats {
   std::size_t boundary_snaps = 0;       // boundary vertices moved onto the input's boundary curve
   std::size_t pulls = 0;                // vertices pulled onto input points far from the output
   std::size_t far_point_insertions = 0; // vertices added at input points far from the output (one more each)
+  std::size_t far_point_attempts = 0;   // rounds of those insertions; all but the last were put back
 };
 
 struct RemeshResult {
