@@ -5,6 +5,7 @@ an exit by a signal (a crash), an exit code other than 0, 1 (bad input, one line
 no path), a run past the time limit, or exit 1 without exactly one stderr line.
 
     scripts/apps_sweep.py ../shared/data/corpus ../shared/data/meshes [--bin build/bin] [--timeout 120] [--all]
+        [--random K --seed S]
 
 Prints one line per finding and a count at the end; exit status 1 when there is any. Session
 22's sweep of the 94 corpus and shared files found gsp-cvt-compare's CGAL crash on
@@ -13,7 +14,9 @@ with --all (20 jobs per file) found gsp-path's crash from a point in a zero-area
 unwelded pole (trimesh_capsule.obj; fixed, tests/pathfinding_pole_test.cpp).
 """
 import argparse
+import json
 import os
+import random
 import subprocess
 import sys
 import tempfile
@@ -56,20 +59,79 @@ def more_jobs(out):
     ]
 
 
+def mesh_facts(bin_dir, path):
+    """(vertices, faces, bbox min, bbox max) of the mesh as the apps load it (STL and glTF
+    welded), from gsp-info --stats; None for a point cloud or a file gsp-info refuses."""
+    p = subprocess.run([os.path.join(bin_dir, "gsp-info"), path, "--stats", "-", "-q"], stdin=subprocess.DEVNULL,
+                       capture_output=True, text=True, errors="replace", timeout=120)
+    if p.returncode != 0:
+        return None
+    r = json.loads(p.stdout)["result"]
+    if r.get("point_cloud"):
+        return None
+    welded = path.lower().endswith((".stl", ".gltf", ".glb"))
+    t = r["topology"]["welded" if welded else "raw"]
+    box = r["geometry"]["bbox"]
+    return t["vertices"], t["faces"], box["min"], box["max"]
+
+
+def random_jobs(out, facts, rng, count):
+    """`count` jobs with random arguments inside the mesh's ranges (vertices, faces, barycentric
+    weights, points in and around the bounding box): sources and end points the fixed jobs never
+    use (a vertex of a sliver, a point in a zero-area face, the same point twice)."""
+    nv, nf, lo, hi = facts
+    o = lambda name: os.path.join(out, name)
+    v = lambda: str(rng.randrange(nv))
+    bary = lambda: f"{rng.random():.6f},{rng.random() * 0.999:.6f}"
+    face_point = lambda: f"{rng.randrange(nf)}:" + (lambda a, b: f"{a:.6f},{min(b, 1 - a):.6f}")(rng.random(), rng.random())
+    point = lambda: ",".join(f"{l + (h - l) * (1.4 * rng.random() - 0.2):.6g}" for l, h in zip(lo, hi))
+    end = lambda: rng.choice([v, face_point, point])()
+    method = lambda: rng.choice(["windows", "astar", "settle", "full", "dijkstra-edges"])
+    templates = [
+        lambda: ("geodesic", ["--source-vertex", f"{v()},{v()}", "--labels", "-o", o("g.ply")]),
+        lambda: ("geodesic", ["--source-face", face_point(), "--method", rng.choice(["gsp", "windows"]), "-o", o("g.ply")]),
+        lambda: ("geodesic", ["--source-point", point(), "-o", o("g.obj")]),
+        lambda: ("geodesic", ["--source-vertex", ",".join(v() for _ in range(3)), "--matrix", "-o", o("m.csv")]),
+        lambda: ("geodesic", ["--source-vertex", v(), "--strategy",
+                              rng.choice(["speed-limiter-postpone", "static-postpone", "dynamic-postpone", "hybrid-postpone",
+                                          "bfs", "priority-queue"]), "--precision", rng.choice(["single", "double"]),
+                              "-o", o("g.ply")]),
+        lambda: ("path", ["--from", end(), "--to", end(), end(), "--method", method()] +
+                 (["--one-end"] if rng.random() < 0.3 else []) + ["-o", o("p.json")]),
+        lambda: ("path", ["--from", v(), "--to", v(), "--method", method(), "-o", o("p.obj")]),
+        lambda: ("sample", ["--count", str(rng.randrange(1, 3000)), "--mode", rng.choice(["poisson", "farthest"]),
+                            "-o", o("s.ply")]),
+    ]
+    apps = {"geodesic": "gsp-geodesic", "path": "gsp-path", "sample": "gsp-sample"}
+    jobs = []
+    for i in range(count):
+        name, args = rng.choice(templates)()
+        jobs.append((f"random-{i}-{name}", apps[name], args))
+    return jobs
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("folders", nargs="+")
     ap.add_argument("--bin", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "bin"))
     ap.add_argument("--timeout", type=float, default=120)
     ap.add_argument("--all", action="store_true", help="also the other methods, sources and apps (more_jobs)")
+    ap.add_argument("--random", type=int, default=0, metavar="K", help="also K jobs per mesh with random arguments")
+    ap.add_argument("--seed", type=int, default=1, help="seed of --random's arguments")
     a = ap.parse_args()
+    rng = random.Random(a.seed)
     job_list = lambda out: jobs(out) + (more_jobs(out) if a.all else [])
     files = sorted(os.path.join(f, n) for f in a.folders for n in os.listdir(f) if n.lower().endswith(MESH_EXTENSIONS))
     findings = 0
     with tempfile.TemporaryDirectory() as out:
         for i, path in enumerate(files):
             print(f"[{i + 1}/{len(files)}] {os.path.basename(path)}", file=sys.stderr, end="\r")
-            for name, app, args in job_list(out):
+            extra = []
+            if a.random > 0:
+                facts = mesh_facts(a.bin, path)
+                if facts and facts[0] > 0 and facts[1] > 0:
+                    extra = random_jobs(out, facts, rng, a.random)
+            for name, app, args in job_list(out) + extra:
                 cmd = [os.path.join(a.bin, app), path, "-q"] + args
                 if app == "gsp-info":
                     cmd.remove("-q")
@@ -84,8 +146,9 @@ def main():
                 bad = p.returncode < 0 or p.returncode not in (0, 1, 2, 3) or (p.returncode == 1 and len(err) != 1)
                 if bad:
                     print(f"{os.path.basename(path)} {name}: exit {p.returncode}: {' | '.join(err)[:200]}")
+                    print(f"    {' '.join(cmd)}")
                     findings += 1
-    print(f"{len(files)} files, {len(job_list(''))} jobs each: {findings} finding(s)")
+    print(f"{len(files)} files, {len(job_list(''))} fixed jobs each (+ {a.random} random): {findings} finding(s)")
     return 1 if findings else 0
 
 
