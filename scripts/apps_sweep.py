@@ -101,8 +101,15 @@ def random_jobs(out, facts, rng, count):
         lambda: ("path", ["--from", v(), "--to", v(), "--method", method(), "-o", o("p.obj")]),
         lambda: ("sample", ["--count", str(rng.randrange(1, 3000)), "--mode", rng.choice(["poisson", "farthest"]),
                             "-o", o("s.ply")]),
+        lambda: ("cvt", rng.choice([["--vertices", str(rng.randrange(3, 800))],
+                                    ["--edge-length", f"{rng.choice([0.5, 2, 5, 20, 60])}%"]]) +
+                 ["--feature-angle", str(rng.choice([0, 20, 40, 89, 179])), "--init",
+                  rng.choice(["poisson", "farthest", "random"]), "--iterations", str(rng.choice([0, 1, 5, 50])),
+                  "--faces-per-site", str(rng.choice([0, 1, 12, 30])), "--threads", str(rng.choice([0, 1]))] +
+                 [f for f in ("--no-fix", "--no-flip", "--no-smooth") if rng.random() < 0.2] +
+                 ["--regions", o("r.ply"), "-o", o("c.ply")]),
     ]
-    apps = {"geodesic": "gsp-geodesic", "path": "gsp-path", "sample": "gsp-sample"}
+    apps = {"geodesic": "gsp-geodesic", "path": "gsp-path", "sample": "gsp-sample", "cvt": "gsp-cvt"}
     jobs = []
     for i in range(count):
         name, args = rng.choice(templates)()
@@ -140,6 +147,7 @@ def main():
                                        errors="replace", timeout=a.timeout)
                 except subprocess.TimeoutExpired:
                     print(f"{os.path.basename(path)} {name}: over {a.timeout:g} s")
+                    print(f"    {' '.join(cmd)}")
                     findings += 1
                     continue
                 err = [l for l in p.stderr.splitlines() if l.strip()]

@@ -18,9 +18,12 @@ struct ComponentRemesh {
   std::size_t sites = 0;
   double energy = 0;
   std::vector<double> energy_curve;
-  CvtStats cvt_stats;
+  CvtStats cvt_stats;                // the last attempt's (its timings: all attempts', below)
   RemeshStats remesh_stats;
   TriangleMesh mesh;
+  // The CVT's phase times summed over every attempt (without features, from other initial
+  // sites, grown), kept or not: where the component's time went.
+  CvtTimings timings;
 };
 
 // The CVT and its dual, again without the features or from other initial sites where the

@@ -39,12 +39,15 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.converged = (first || sum.converged) && s.converged;
   sum.update_steps += s.update_steps;
   sum.propagations += s.propagations;
-  sum.timings.subdivide += s.timings.subdivide;
-  sum.timings.prepare += s.timings.prepare;
-  sum.timings.initial += s.timings.initial;
-  sum.timings.propagate += s.timings.propagate;
-  sum.timings.centroids += s.timings.centroids;
-  sum.timings.fix += s.timings.fix;
+}
+
+void add_timings(CvtTimings& sum, const CvtTimings& t) {
+  sum.subdivide += t.subdivide;
+  sum.prepare += t.prepare;
+  sum.initial += t.initial;
+  sum.propagate += t.propagate;
+  sum.centroids += t.centroids;
+  sum.fix += t.fix;
 }
 
 void add_stats(RemeshStats& sum, const RemeshStats& s) {
@@ -266,7 +269,9 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     } else if (r.error) {
       keep(ComponentOutcome::kept_error, r.why);
     } else {
+      // Every attempt's time, whether the component ends remeshed or kept.
       out.remesh_seconds += rep.remesh_seconds;
+      add_timings(out.cvt_stats.timings, r.timings);
       double remeshed_angle = 0, input_angle = 0;
       if (!r.ok) {
         keep(ComponentOutcome::kept_topology,

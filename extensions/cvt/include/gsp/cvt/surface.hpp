@@ -104,9 +104,11 @@ struct SurfaceRemeshResult {
   // Input faces left out (drop_duplicate_faces): on the same three vertices as an earlier
   // face, or with a vertex repeated.
   std::size_t duplicate_faces_removed = 0, repeated_vertex_faces_removed = 0;
-  CvtStats cvt_stats;                      // summed (iterations: the largest; converged: all)
+  // Summed over the remeshed components (iterations: the largest; converged: all); its timings
+  // over every attempt of every component tried, the ones that ended kept too.
+  CvtStats cvt_stats;
   RemeshStats remesh_stats;                // summed
-  double remesh_seconds = 0;               // the duals and their post-passes
+  double remesh_seconds = 0;               // the duals and their post-passes, every attempt
   std::size_t remeshed() const;
 };
 
