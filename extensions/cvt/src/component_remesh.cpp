@@ -24,15 +24,6 @@ std::size_t orient_by_majority(TriangleMesh& m) {
   return m.num_faces() - std::size_t(flipped);
 }
 
-void add_timings(CvtTimings& sum, const CvtTimings& t) {
-  sum.subdivide += t.subdivide;
-  sum.prepare += t.prepare;
-  sum.initial += t.initial;
-  sum.propagate += t.propagate;
-  sum.centroids += t.centroids;
-  sum.fix += t.fix;
-}
-
 }  // namespace
 
 ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
@@ -62,7 +53,7 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
       auto t0 = Clock::now();
       cvt = compute_cvt(oriented, c);
       rep.cvt_seconds += seconds_since(t0);
-      add_timings(out.timings, cvt.stats.timings);
+      out.timings += cvt.stats.timings;
       t0 = Clock::now();
       r = restricted_delaunay(cvt, remesh_options);
       rep.remesh_seconds += seconds_since(t0);

@@ -41,15 +41,6 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.propagations += s.propagations;
 }
 
-void add_timings(CvtTimings& sum, const CvtTimings& t) {
-  sum.subdivide += t.subdivide;
-  sum.prepare += t.prepare;
-  sum.initial += t.initial;
-  sum.propagate += t.propagate;
-  sum.centroids += t.centroids;
-  sum.fix += t.fix;
-}
-
 void add_stats(RemeshStats& sum, const RemeshStats& s) {
   sum.junctions += s.junctions;
   sum.junctions_over_three += s.junctions_over_three;
@@ -271,7 +262,7 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
     } else {
       // Every attempt's time, whether the component ends remeshed or kept.
       out.remesh_seconds += rep.remesh_seconds;
-      add_timings(out.cvt_stats.timings, r.timings);
+      out.cvt_stats.timings += r.timings;
       double remeshed_angle = 0, input_angle = 0;
       if (!r.ok) {
         keep(ComponentOutcome::kept_topology,

@@ -124,6 +124,12 @@ struct Site {
 
 struct CvtTimings {   // seconds
   double subdivide = 0, prepare = 0, initial = 0, propagate = 0, centroids = 0, fix = 0;
+  // Phase by phase (remesh_surface sums the attempts and the components).
+  CvtTimings& operator+=(const CvtTimings& t) {
+    subdivide += t.subdivide, prepare += t.prepare, initial += t.initial;
+    propagate += t.propagate, centroids += t.centroids, fix += t.fix;
+    return *this;
+  }
 };
 
 struct CvtStats {
