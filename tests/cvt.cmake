@@ -18,7 +18,7 @@ if(TARGET gsp-cvt-compare)
   gsp_test(cvt_compare_app_test SOURCES cvt_compare_app_test.cpp DEPS gsp::io)
   add_dependencies(cvt_compare_app_test gsp-cvt-compare)   # the test runs the binary
   gsp_test(cvt_compare_memory_cap_test SOURCES cvt_compare_memory_cap_test.cpp
-           ${PROJECT_SOURCE_DIR}/apps/gsp-cvt/compare/memory_cap.cpp DEPS gsp::core)
+           ${PROJECT_SOURCE_DIR}/apps/gsp-cvt/compare/memory_cap.cpp DEPS gsp::core gsp::cli)
   target_include_directories(cvt_compare_memory_cap_test PRIVATE ${PROJECT_SOURCE_DIR}/apps/gsp-cvt/compare)
 endif()
 gsp_test(cvt_component_budget_test SOURCES cvt_component_budget_test.cpp DEPS gsp::cvt)

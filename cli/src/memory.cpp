@@ -17,6 +17,7 @@ ResidentMemory resident_memory() {
     unsigned long long kb = 0;
     if (std::sscanf(line, "VmRSS: %llu kB", &kb) == 1) m.current = std::size_t(kb) * 1024;
     if (std::sscanf(line, "VmHWM: %llu kB", &kb) == 1) m.peak = std::size_t(kb) * 1024;
+    if (std::sscanf(line, "VmSize: %llu kB", &kb) == 1) m.address_space = std::size_t(kb) * 1024;
   }
   std::fclose(f);
   return m;

@@ -95,7 +95,6 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
       out.energy = cvt.energy;
       out.energy_curve = std::move(cvt.energy_curve);
       out.cvt_stats = cvt.stats;
-      out.cvt_stats.timings = out.timings;
       out.remesh_stats = r.stats;
       out.mesh = std::move(r.mesh);
     }

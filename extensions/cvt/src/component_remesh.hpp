@@ -18,7 +18,7 @@ struct ComponentRemesh {
   std::size_t sites = 0;
   double energy = 0;
   std::vector<double> energy_curve;
-  CvtStats cvt_stats;                // the last attempt's (its timings: all attempts', below)
+  CvtStats cvt_stats;                // the last attempt's (its phase times: `timings` below)
   RemeshStats remesh_stats;
   TriangleMesh mesh;
   // The CVT's phase times summed over every attempt (without features, from other initial

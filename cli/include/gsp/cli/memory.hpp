@@ -1,13 +1,15 @@
 #pragma once
 // This process's resident memory as the kernel counts it (Linux /proc/self/status: VmRSS now,
 // VmHWM its peak so far): what --stats reports per phase, so a run's peak can be set against
-// the mesh size (bytes per vertex) and against another method's run on the same mesh.
+// the mesh size (bytes per vertex) and against another method's run on the same mesh. VmSize,
+// the address space, is what an RLIMIT_AS cap counts (gsp-cvt-compare's cap around CGAL).
 #include <cstddef>
 
 namespace gsp::cli {
 
 struct ResidentMemory {
   std::size_t current = 0, peak = 0;   // bytes; 0 where the system does not say
+  std::size_t address_space = 0;       // VmSize, bytes (far more than resident once thread pools reserved theirs)
 };
 
 ResidentMemory resident_memory();
