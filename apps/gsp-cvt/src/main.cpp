@@ -32,7 +32,7 @@ struct Options {
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   unsigned threads = 0;
-  bool no_fix = false, no_flip = false, no_smooth = false, ascii = false;
+  bool no_fix = false, no_flip = false, no_smooth = false, no_planar_flips = false, ascii = false;
   cli::LoadOptions load;
 };
 
@@ -69,6 +69,9 @@ void add_options(CLI::App& app, Options& o) {
                  "curves kept as chains of edges, their corners as vertices (0 = off; default 0)")
       ->check(CLI::Range(0.0, 180.0));
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
+  app.add_flag("--no-planar-flips", o.no_planar_flips,
+               "keep the working mesh's slivers inside planes (CAD fans) instead of flipping them to Delaunay "
+               "triangles of the same plane (docs/cvt.md)");
   app.add_flag("--no-flip", o.no_flip, "write the restricted Delaunay dual as it is, without the angle-raising edge flips");
   app.add_flag("--no-smooth", o.no_smooth,
                "leave the vertices at the sites (no angle-raising moves along the input surface)");
@@ -113,6 +116,7 @@ void run(cli::Context& ctx, const Options& o) {
   co.min_faces_per_site = o.faces_per_site;
   co.threads = o.threads;
   co.fix_regions = !o.no_fix;
+  co.planar_flips = !o.no_planar_flips;
   co.feature_angle = o.feature_angle;
   ctx.settings()["method"] = "lloyd-gsp";
   if (o.vertices) ctx.settings()["vertices"] = o.vertices;
@@ -125,6 +129,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["faces_per_site"] = o.faces_per_site;
   ctx.settings()["threads"] = o.threads;
   ctx.settings()["fix_regions"] = co.fix_regions;
+  ctx.settings()["planar_flips"] = co.planar_flips;
   ctx.settings()["feature_angle"] = o.feature_angle;
   ctx.settings()["flip_edges"] = !o.no_flip;
   ctx.settings()["smooth"] = !o.no_smooth;

@@ -61,6 +61,7 @@ void report_cvt(cli::Context& ctx, const cvt::SurfaceRemeshResult& cvt) {
   ops["working_faces"] = s.working_faces;
   ops["subdivisions"] = s.subdivisions;
   ops["bisections"] = s.bisections;
+  ops["planar_flips"] = s.planar_flips;
   cli::PhaseTimer& t = ctx.timer();
   t.add("subdivide", s.timings.subdivide);
   t.add("build", s.timings.prepare);

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace gsp::cvt::detail {
 
@@ -74,6 +75,93 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
       }
     flips += this_pass;
     if (this_pass == 0) break;
+  }
+  return flips;
+}
+
+std::size_t delaunay_flips_in_planes(TriangleMesh& m, double max_height, std::size_t max_flips,
+                                     std::vector<bool>& changed) {
+  // Halfedge 3 f + k runs from corner k to k + 1; twin: the opposite halfedge of the one other
+  // face on that edge (consistently oriented, exactly two faces), else kInvalidIndex. The
+  // undirected edges as a set, for the one question a flip asks of the whole mesh: does the
+  // new edge exist already. (A map of directed edges, updated with six erasures and six
+  // insertions a flip, took 1.3 s for a CAD gear's 376,000 flips.)
+  const std::size_t nh = 3 * m.num_faces();
+  std::vector<Index> twin(nh, kInvalidIndex);
+  std::vector<std::pair<std::uint64_t, Index>> sorted(nh);
+  {
+    // Halfedges sorted by their undirected edge: an edge of exactly two halfedges in opposite
+    // directions links them.
+    for (Index h = 0; h < nh; ++h) {
+      const Triangle& t = m.triangles[h / 3];
+      const Index a = t[h % 3], b = t[(h % 3 + 1) % 3];
+      sorted[h] = {edge_key(std::min(a, b), std::max(a, b)), h};
+    }
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t i = 0; i < nh;) {
+      std::size_t k = i + 1;
+      while (k < nh && sorted[k].first == sorted[i].first) ++k;
+      if (k == i + 2) {
+        const Index h = sorted[i].second, o = sorted[i + 1].second;
+        const Triangle &t = m.triangles[h / 3], &u = m.triangles[o / 3];
+        if (h / 3 != o / 3 && t[h % 3] == u[(o % 3 + 1) % 3] && t[h % 3] != t[(h % 3 + 1) % 3]) twin[h] = o, twin[o] = h;
+      }
+      i = k;
+    }
+  }
+  // Built at the first flip: a curved mesh (a scan) has none and skips it.
+  std::unordered_set<std::uint64_t> edges;
+  auto edge_exists = [&](Index c, Index d) {
+    if (edges.empty()) {
+      edges.reserve(nh);
+      for (const auto& e : sorted) edges.insert(e.first);
+      sorted = {};
+    }
+    return edges.count(edge_key(std::min(c, d), std::max(c, d))) > 0;
+  };
+  auto link = [&](Index h, Index o) {
+    twin[h] = o;
+    if (o != kInvalidIndex) twin[o] = h;
+  };
+  std::vector<Index> stack(m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f) stack[f] = m.num_faces() - 1 - f;
+  std::size_t flips = 0;
+  while (!stack.empty() && flips < max_flips) {
+    const Index f = stack.back();
+    stack.pop_back();
+    for (Index i = 0; i < 3; ++i) {
+      const Index h = 3 * f + i, o = twin[h];
+      if (o == kInvalidIndex) continue;
+      const Index g = o / 3, j = o % 3;
+      const Triangle t = m.triangles[f];
+      const Index a = t[i], b = t[(i + 1) % 3], c = t[(i + 2) % 3], d = m.triangles[g][(j + 2) % 3];
+      if (d == c) continue;
+      const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c], pd = m.positions[d];
+      // Not locally Delaunay: the cotangents of the angles at c and d sum below 0.
+      const Vec3 xc = cross(pa - pc, pb - pc), xd = cross(pb - pd, pa - pd);
+      const double sc = norm(xc), sd = norm(xd);
+      if (!(sc > 0) || !(sd > 0)) continue;
+      if (dot(pa - pc, pb - pc) / sc + dot(pb - pd, pa - pd) / sd >= -1e-9) continue;
+      // One plane: d off (a, b, c)'s plane and c off (b, a, d)'s by at most max_height.
+      if (std::abs(dot(pd - pa, xc)) > max_height * sc || std::abs(dot(pc - pa, xd)) > max_height * sd) continue;
+      const Vec3 n = xc + xd;
+      if (dot(normal(pa, pd, pc), n) <= 0 || dot(normal(pd, pb, pc), n) <= 0) continue;
+      if (edge_exists(c, d)) continue;
+      // f = (a, b, c), g = (b, a, d) become (a, d, c) and (d, b, c).
+      const Index bc = twin[3 * f + (i + 1) % 3], ca = twin[3 * f + (i + 2) % 3];
+      const Index ad = twin[3 * g + (j + 1) % 3], db = twin[3 * g + (j + 2) % 3];
+      m.triangles[f] = {a, d, c};
+      m.triangles[g] = {d, b, c};
+      link(3 * f + 0, ad), link(3 * f + 1, 3 * g + 2), link(3 * f + 2, ca);
+      link(3 * g + 0, db), link(3 * g + 1, bc);
+      edges.erase(edge_key(std::min(a, b), std::max(a, b)));
+      edges.insert(edge_key(std::min(c, d), std::max(c, d)));
+      changed[f] = changed[g] = true;
+      stack.push_back(g);
+      stack.push_back(f);
+      ++flips;
+      break;   // f is (a, d, c) now: its edges are checked again when it is popped
+    }
   }
   return flips;
 }

@@ -15,6 +15,16 @@ namespace gsp::cvt::detail {
 std::size_t improve_by_flips(TriangleMesh& mesh, double max_normal_angle_deg, int max_passes = 20,
                              const std::vector<bool>* locked = nullptr);
 
+// Lawson's Delaunay flips restricted to planes: an interior edge whose two opposite angles sum
+// to more than 180 degrees is flipped when the four corners lie in one plane (each off the
+// other triangle's plane by at most `max_height`, so the surface moves by no more than that),
+// the new triangles face the old pair's way, the smaller of the pair's smallest angles rises
+// and the new edge does not exist yet. Flipped edges' neighbours are checked again until none
+// is left (at most `max_flips`). `changed` (sized to the faces) marks the faces rewritten.
+// Returns the number of flips.
+std::size_t delaunay_flips_in_planes(TriangleMesh& mesh, double max_height, std::size_t max_flips,
+                                     std::vector<bool>& changed);
+
 // Caps across creases: a triangle with an angle above `cap_angle_deg` (its vertex nearly on
 // the opposite edge) has that edge flipped when the flip raises the smaller of the pair's
 // smallest angles, both new triangles face the way the pair faces on the whole, the new edge

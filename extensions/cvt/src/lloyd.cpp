@@ -4,8 +4,10 @@
 #include "boundary_loops.hpp"
 #include "child_faces.hpp"
 #include "feature_sites.hpp"
+#include "input_walk.hpp"
 #include "junctions.hpp"
 #include "regions.hpp"
+#include "working_flips.hpp"
 #include "working_geometry.hpp"
 
 #include <gsp/cvt/components.hpp>
@@ -19,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <numeric>
 
 namespace gsp::cvt {
@@ -388,12 +391,19 @@ std::size_t site_count(const CvtOptions& o, double area) {
   return std::max<std::size_t>(4, std::size_t(std::llround(n)));
 }
 
-Site to_input(const WorkingMesh& w, const SurfaceSite& s) {
+// `walk`: given when the working mesh was flipped in planes; a site in a flipped face can lie
+// in another input face of its parent's plane, found by walking there.
+Site to_input(const WorkingMesh& w, const SurfaceSite& s, const detail::InputWalk* walk) {
   Site out;
   const Index f = s.point.element;
   out.point = SurfacePoint::in_face(w.parent[f], {0, 0, 0});
   for (int k = 0; k < 3; ++k)
     for (int j = 0; j < 3; ++j) out.point.barycentric[j] += s.point.barycentric[k] * w.corner_bary[f][k][j];
+  const auto& b = out.point.barycentric;
+  if (walk && std::min({b[0], b[1], b[2]}) < -1e-9) {
+    const auto [face, bary] = walk->locate(w.parent[f], s.position, true);
+    out.point = SurfacePoint::in_face(face, bary);
+  }
   out.position = s.position;
   out.on_boundary = s.on_boundary;
   out.fixed = s.fixed;
@@ -429,8 +439,27 @@ std::vector<SurfaceSite> initial_sites(const TriangleMesh& mesh, const WorkingMe
   }
   const sampling::Sampler sampler(mesh);
   const ChildFaces children(w, mesh.num_faces());
-  for (const sampling::Sample& s : sampler.sample(so).samples)
-    sites.push_back(children.closest(g, s.point.element, s.point.barycentric, s.position));
+  // After planar flips an input face can be left without working faces of its own (none has
+  // its centroid there): its samples are found by walking the working mesh from a face at the
+  // input face's first corner (the working mesh's first vertices are the input's).
+  std::unique_ptr<detail::InputWalk> working_walk;
+  std::vector<Index> face_at_vertex;
+  for (const sampling::Sample& s : sampler.sample(so).samples) {
+    SurfaceSite site = children.closest(g, s.point.element, s.point.barycentric, s.position);
+    if (site.point.element == kInvalidIndex) {
+      if (!working_walk) {
+        working_walk = std::make_unique<detail::InputWalk>(w.mesh);
+        face_at_vertex.assign(w.mesh.num_vertices(), kInvalidIndex);
+        for (Index f = 0; f < w.mesh.num_faces(); ++f)
+          for (Index v : w.mesh.triangles[f]) face_at_vertex[v] = f;
+      }
+      const Index start = face_at_vertex[mesh.triangles[s.point.element][0]];
+      if (start == kInvalidIndex) continue;
+      const auto [face, bary] = working_walk->locate(start, s.position, true);
+      site = g.at(face, bary);
+    }
+    sites.push_back(site);
+  }
   // The radius search meets the count within 2%: trim the last accepted samples (the vertex
   // fill, which plugs the smallest gaps) or add area-uniform points; Lloyd evens both out.
   if (sites.size() > n) sites.resize(n);
@@ -499,6 +528,12 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   char what[120];
   std::snprintf(what, sizeof what, "cvt: %zu sites need a working mesh of about %.3g faces", n, planned_faces);
   require_memory(what, planned_faces * kBytesPerWorkingFace, "vertices", options.max_memory);
+  // Slivers in planes (CAD fans) made well-shaped before the split multiplies them
+  // (working_flips.hpp); the split keeps their shapes.
+  std::unique_ptr<detail::InputWalk> walk;
+  if (options.planar_flips)
+    stats.planar_flips =
+        detail::flip_in_planes(out.working, mesh, kPlanarFlipHeight * face_bounding_box(mesh).diagonal(), walk);
   subdivide(out.working, levels);
   if (n > out.working.mesh.num_vertices())
     throw InvalidInput("cvt: " + std::to_string(n) + " sites asked for, the mesh (split " + std::to_string(levels) +
@@ -647,7 +682,7 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   out.working_vertex_label = e.result.vertex_source;
   out.vertex_label.assign(e.result.vertex_source.begin(), e.result.vertex_source.begin() + long(mesh.num_vertices()));
   for (const SurfaceSite& s : sites) {
-    out.sites.push_back(to_input(out.working, s));
+    out.sites.push_back(to_input(out.working, s, walk.get()));
     out.working_site_position.push_back(s.position);
     out.working_site_face.push_back(s.point.element);
   }

@@ -36,6 +36,7 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.working_faces += s.working_faces;
   sum.subdivisions = std::max(sum.subdivisions, s.subdivisions);
   sum.bisections += s.bisections;
+  sum.planar_flips += s.planar_flips;
   sum.converged = (first || sum.converged) && s.converged;
   sum.update_steps += s.update_steps;
   sum.propagations += s.propagations;

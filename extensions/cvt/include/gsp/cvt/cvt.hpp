@@ -37,6 +37,11 @@ struct IterationInfo {
 };
 using IterationFn = std::function<void(const IterationInfo&)>;
 
+// How far (relative to the bounding box's diagonal) the four corners of a flipped working-mesh
+// edge may lie off one plane: the surface moves by at most that (float STL coordinates of one
+// plane are off it by about 1e-7 of the diagonal).
+inline constexpr double kPlanarFlipHeight = 1e-6;
+
 struct CvtOptions {
   // Exactly one of sites (> 0) and edge_length (> 0, model units; converted to a site count
   // by N = 2 A / (sqrt(3) L^2), the vertex count of an equilateral triangulation of area A).
@@ -109,6 +114,10 @@ struct CvtOptions {
   // the components side by side on that many threads instead (0: all cores), each of them on
   // one thread, unless one component has more than 3/4 of the sites.
   unsigned threads = 0;
+  // Delaunay flips of the working mesh's edges whose four corners lie in one plane (within
+  // kPlanarFlipHeight of the diagonal): CAD exports' flat faces are fans of slivers, on which
+  // GSP's regions went wrong (docs/cvt.md, "Slivers in planes").
+  bool planar_flips = true;
   IterationFn on_iteration;
 };
 
@@ -150,6 +159,7 @@ struct CvtStats {
   std::size_t working_faces = 0;
   int subdivisions = 0;
   std::size_t bisections = 0;      // long edges split after the uniform subdivision
+  std::size_t planar_flips = 0;    // working-mesh edges flipped inside planes (CvtOptions::planar_flips)
   bool converged = false;          // tolerance met (else the iteration cap or no decrease)
   bool stopped_hopeless = false;   // stopped at CvtOptions::hopeless_check_iteration
   std::size_t hopeless_defects = 0;   // the places the dual was wrong at then

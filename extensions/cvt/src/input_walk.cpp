@@ -1,0 +1,75 @@
+#include "input_walk.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <tuple>
+
+namespace gsp::cvt::detail {
+
+std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x) {
+  const Triangle& t = mesh.triangles[face];
+  const Vec3 a = mesh.positions[t[0]], v0 = mesh.positions[t[1]] - a, v1 = mesh.positions[t[2]] - a, v2 = x - a;
+  const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
+  const double den = d00 * d11 - d01 * d01;
+  if (!(den > 0)) return {0, 0, 0};
+  const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den;
+  return {1 - b1 - b2, b1, b2};
+}
+
+InputWalk::InputWalk(const TriangleMesh& input) : mesh_(input), across_(3 * input.num_faces(), kInvalidIndex) {
+  // Undirected edges sorted: an edge of exactly two faces links them (either orientation).
+  std::vector<std::tuple<Index, Index, Index>> edges;
+  edges.reserve(3 * input.num_faces());
+  for (Index f = 0; f < input.num_faces(); ++f)
+    for (Index k = 0; k < 3; ++k) {
+      const Index a = input.triangles[f][k], b = input.triangles[f][(k + 1) % 3];
+      edges.emplace_back(std::min(a, b), std::max(a, b), 3 * f + k);
+    }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
+           std::get<1>(edges[j]) == std::get<1>(edges[i]))
+      ++j;
+    if (j == i + 2) {
+      const Index h = std::get<2>(edges[i]), g = std::get<2>(edges[i + 1]);
+      across_[h] = g / 3, across_[g] = h / 3;
+    }
+    i = j;
+  }
+}
+
+std::pair<Index, std::array<double, 3>> InputWalk::locate(Index start, Vec3 x, bool clamp) const {
+  Index f = start, best = start, previous = kInvalidIndex;
+  std::array<double, 3> b = affine_coordinates(mesh_, f, x), best_b = b;
+  double best_min = b[0] == 0 && b[1] == 0 && b[2] == 0 ? -1.0 : *std::min_element(b.begin(), b.end());
+  for (int step = 0; step < 1000 && best_min < -1e-12; ++step) {
+    // The edge facing the most negative coordinate (corner k faces edge k + 1 -> k + 2),
+    // never straight back where the walk came from; a face of no area (all coordinates 0)
+    // holds nothing and is left by any other edge.
+    const bool flat = b[0] == 0 && b[1] == 0 && b[2] == 0;
+    int k = -1;
+    for (int i = 0; i < 3; ++i) {
+      const Index next = across_[3 * f + (i + 1) % 3];
+      if ((b[i] < -1e-12 || flat) && next != kInvalidIndex && next != previous && (k < 0 || b[i] < b[k])) k = i;
+    }
+    if (k < 0) break;
+    previous = f;
+    f = across_[3 * f + (k + 1) % 3];
+    b = affine_coordinates(mesh_, f, x);
+    const bool none = b[0] == 0 && b[1] == 0 && b[2] == 0;
+    const double m = *std::min_element(b.begin(), b.end());
+    if (!none && m > best_min) best_min = m, best = f, best_b = b;
+  }
+  if (clamp) {
+    double sum = 0;
+    for (double& c : best_b) sum += (c = std::max(c, 0.0));
+    if (sum > 0)
+      for (double& c : best_b) c /= sum;
+    else
+      best_b = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  }
+  return {best, best_b};
+}
+
+}  // namespace gsp::cvt::detail
