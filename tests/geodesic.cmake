@@ -8,6 +8,7 @@ gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gs
 if(GSP_WITH_CGAL)
   gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
   gsp_test(geodesic_windows_test SOURCES geodesic_windows_test.cpp DEPS gsp::core gsp::io gsp::reference)
+  gsp_test(geodesic_face_points_test SOURCES geodesic_face_points_test.cpp DEPS gsp::core gsp::io gsp::reference)
 endif()
 if(TARGET gsp-geodesic)
   gsp_test(geodesic_app_test SOURCES geodesic_app_test.cpp DEPS gsp::core gsp::io gsp::render)

@@ -49,11 +49,9 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
                                        const GeodesicOptions& options) const {
   detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh().num_vertices());
   detail::validate_sources(sources, impl_->mesh());
-  // The intrinsic Delaunay faces are not the input's: a point given in an input face and the
-  // per-face virtual sources need the input faces.
-  bool vertex_sources_only = true;
-  for (const Source& s : sources) vertex_sources_only &= s.kind == Source::Kind::vertex;
-  const bool use_delaunay = impl_->delaunay && vertex_sources_only && !options.want_face_sources;
+  // The intrinsic Delaunay faces are not the input's: the per-face virtual sources need the
+  // input faces. A point given in an input face is found on them (query_seed.hpp).
+  const bool use_delaunay = impl_->delaunay && !options.want_face_sources;
   const Triangulation& tri = use_delaunay ? *impl_->delaunay : impl_->input;
   if (impl_->precision_on(tri, options.precision) == Precision::single) return impl_->run<float>(tri, sources, options);
   return impl_->run<double>(tri, sources, options);

@@ -364,6 +364,7 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
     t.ring[base1 + 2] = base2 + 2;
     t.ring[base2 + 2] = base1 + 2;
     ++flips;
+    if (t.log) t.log->push_back({f1, f2, a, b, c, d, lab, cx, cy, dx, dy});
     changed[f1] = changed[f2] = 1;
     for (Index x : {base1 + 0, base1 + 1, base2 + 0, base2 + 1})
       if (!queued[x] && flippable_twin(t, x) != kInvalidIndex) stack.push_back(x), queued[x] = kPending;

@@ -20,6 +20,16 @@
 
 namespace gsp::detail {
 
+// One flip, as make_intrinsic_delaunay did it: faces f1 = (a, b, c) and f2 = (b, a, d) (as
+// vertex sets) became (c, a, d) and (d, b, c), unfolded with a = (0, 0), b = (lab, 0), c =
+// (cx, cy) above and d = (dx, dy) below. A point of f1 or f2 is found again in the new faces
+// from this alone (flip_replay.hpp).
+struct FlipRecord {
+  Index f1, f2;
+  Index a, b, c, d;
+  double lab, cx, cy, dx, dy;
+};
+
 struct IntrinsicTriangulation {
   std::vector<Triangle> triangles;   // corner vertices
   std::vector<double> length;        // per halfedge 3f+i: |corner i -> corner i+1|
@@ -28,6 +38,7 @@ struct IntrinsicTriangulation {
   const std::vector<Vec3>* positions = nullptr;   // optional: picks each patch's winding (above)
   std::size_t reoriented = 0;        // out: faces whose winding make_intrinsic_delaunay reversed
   std::vector<char> flipped;         // out: per face, whether a flip rewrote it (its lengths are new)
+  std::vector<FlipRecord>* log = nullptr;   // out, when given: every flip in order
 };
 
 // Winds the faces consistently (see above; reversing keeps corner 0: (a, b, c) -> (a, c, b)),

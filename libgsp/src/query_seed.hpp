@@ -23,6 +23,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     Index label;
   };
   std::vector<SeededFacePoint> face_points;   // multi-source runs only (see below)
+  std::vector<VertexSeed> corner_seeds;       // input-face corners of points found on the flipped faces
 
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
@@ -43,9 +44,25 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     } else {
       const auto& b = src.barycentric;
       const double sum = b[0] + b[1] + b[2];
-      const Index f = maps.face_to_layout(src.element);
+      Index f = maps.face_to_layout(src.element);
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
-      const double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
+      double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
+      if (&tri == delaunay.get()) {
+        // The input face's point on the flipped faces (flip_replay.hpp). Its input face's
+        // corners get their straight in-face distance as their value (exact: the segment is on
+        // the surface): the flipped face holding the point need not hold them, and one virtual
+        // source per face could bend on the way (a CAD tray's long face: its far corner 18.6%
+        // long without). Only as values, not as seeds of their fans: seeded, they took the
+        // parallel speed limiter into its postponing mode and 152 update steps per face on a
+        // 2.2M-vertex mesh (docs/gsp-core.md).
+        const Triangle& corners = mesh().triangles[f];
+        const Vec3 at = w[0] * mesh().positions[corners[0]] + w[1] * mesh().positions[corners[1]] +
+                        w[2] * mesh().positions[corners[2]];
+        for (Index v : corners) corner_seeds.push_back({v, src.offset + distance(at, mesh().positions[v]), label});
+        const auto [face, weights] = flip_replay().locate(f, corners, w, tri.triangles());
+        f = face;
+        for (int i = 0; i < 3; ++i) w[i] = weights[i];
+      }
       if (seed_face(length, f, w, scale, src.offset * scale, label, state)) {
         for (int i = 0; i < 3; ++i) queue.push_back({3 * f + i, state[f].dT});
         if (seeded) seeded->push_back(f);
@@ -80,6 +97,10 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         }
       }
     }
+  }
+  for (const VertexSeed& cs : corner_seeds) {
+    vertex_seeds.push_back(cs);
+    if (goal) goal->vertex_value(cs.vertex, Real(cs.value * scale));
   }
   // One seed per vertex, by vertex: of several sources at one vertex the smallest value, the
   // first source on ties. Every later step applies this list as it is.

@@ -2,6 +2,7 @@
 // The solver's prepared state (GeodesicSolver::Impl) and the pieces its queries share; internal
 // to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
 // bounded ones; query_seed.hpp and query_propagate.hpp hold the seeding and propagation both use.
+#include "flip_replay.hpp"
 #include "goal_directed.hpp"
 #include "index_maps.hpp"
 #include "intrinsic_geometry.hpp"
@@ -169,6 +170,11 @@ struct GeodesicSolver::Impl {
   const TriangleMesh& mesh() const { return *mesh_store; }
   Triangulation input;             // the (reordered) input faces
   std::unique_ptr<Triangulation> delaunay;   // their intrinsic Delaunay flip, if it changed anything
+  // With `delaunay`: its flips, to find a point of an input face on it (flip_replay.hpp);
+  // made by flip_replay() at the first query that needs it.
+  mutable std::once_flag replay_once;
+  mutable std::unique_ptr<detail::FlipReplay> replay;
+  const detail::FlipReplay& flip_replay() const;
   std::size_t flips = 0;
   std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
   // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
@@ -241,6 +247,8 @@ struct GeodesicSolver::Impl {
   // triangulation and releases the rest of `conn`.
   void analyse_vertices(Connectivity& conn, intrinsic::CornerAngleSums&& angle_sums);
   void build_delaunay(bool two_threads);
+  detail::IntrinsicTriangulation unflipped() const;   // the input's tables as the flips start from them
+  std::size_t flip_cap() const;
   template <class Real>
   GeodesicResult run(const Triangulation& tri, const std::vector<Source>& sources,
                      const GeodesicOptions& options) const;

@@ -211,8 +211,9 @@ struct SolverOptions {
   bool spatial_layout = false;
   // Propagate on the intrinsic Delaunay triangulation of the mesh (edge flips that keep the
   // surface exactly; same vertices): slivers and fans of CAD meshes become well-shaped
-  // triangles. Used for vertex sources; face-point sources and per-face virtual sources use
-  // the input faces. See docs/gsp-core.md.
+  // triangles. Used for vertex sources and for points inside faces (found on the flipped
+  // faces by replaying the flips); the per-face virtual sources (want_face_sources) and
+  // bounded queries (compute_local) use the input faces. See docs/gsp-core.md.
   bool intrinsic_delaunay = true;
   VisibilityHeuristic heuristic = VisibilityHeuristic::published();
   // Intrinsic edge lengths to propagate on instead of the 3D ones (a Riemannian metric, see
