@@ -22,17 +22,6 @@ namespace {
 // The bar for benign isotropic meshes (the paper reports 0.19% on its benign set).
 constexpr double kBenignBound = 0.0025;
 
-double mre(const std::vector<double>& approx, const std::vector<double>& exact) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (std::size_t v = 0; v < exact.size(); ++v) {
-    if (!(exact[v] > 0) || !std::isfinite(exact[v])) continue;
-    sum += std::isfinite(approx[v]) ? std::abs(approx[v] - exact[v]) / exact[v] : 1.0;
-    ++n;
-  }
-  return n ? sum / double(n) : 0;
-}
-
 struct Errors {
   double gsp = 0, gsp_double = 0, gsp_input_faces = 0, dijkstra = 0, heat = 0;
 };

@@ -19,17 +19,6 @@
 namespace gsp::test {
 namespace {
 
-double mre(const std::vector<double>& approx, const std::vector<double>& exact) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (std::size_t v = 0; v < exact.size(); ++v) {
-    if (!(exact[v] > 0) || !std::isfinite(exact[v])) continue;
-    sum += std::isfinite(approx[v]) ? std::abs(approx[v] - exact[v]) / exact[v] : 1.0;
-    ++n;
-  }
-  return n ? sum / double(n) : 0;
-}
-
 TriangleMesh sensor() { return weld_vertices(io::read_mesh(shared_mesh("adis16480_sensor.stl")).mesh).mesh; }
 
 TEST(GeodesicFacePoints, APointAtACornerIsThatVertex) {

@@ -26,17 +26,6 @@ using pointcloud::PointGeodesicOptions;
 using pointcloud::PointMethod;
 using pointcloud::PointSource;
 
-inline double mre(const std::vector<double>& approx, const std::vector<double>& reference) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (std::size_t v = 0; v < reference.size(); ++v) {
-    if (!(reference[v] > 0) || !std::isfinite(reference[v])) continue;
-    sum += std::isfinite(approx[v]) ? std::abs(approx[v] - reference[v]) / reference[v] : 1.0;
-    ++n;
-  }
-  return n ? sum / double(n) : 0;
-}
-
 struct Errors {
   double gsp = 0, dijkstra = 0;
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace gsp::test {
 
@@ -73,6 +74,19 @@ inline BentStrip bent_strip(int nx, int ny, double radius, double turn, double d
 
 inline double relative_error(double approx, double exact) {
   return exact > 0 ? std::abs(approx - exact) / exact : std::abs(approx);
+}
+
+// Mean relative error against reference values over the vertices the reference reaches (> 0
+// and finite): a vertex the approximation leaves unreached counts as 100%.
+inline double mre(const std::vector<double>& approx, const std::vector<double>& reference) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::size_t v = 0; v < reference.size(); ++v) {
+    if (!(reference[v] > 0) || !std::isfinite(reference[v])) continue;
+    sum += std::isfinite(approx[v]) ? std::abs(approx[v] - reference[v]) / reference[v] : 1.0;
+    ++n;
+  }
+  return n ? sum / double(n) : 0;
 }
 
 // The diagonal of the axis-aligned bounding box.

@@ -6,16 +6,6 @@
 
 namespace gsp::cvt::detail {
 
-std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x) {
-  const Triangle& t = mesh.triangles[face];
-  const Vec3 a = mesh.positions[t[0]], v0 = mesh.positions[t[1]] - a, v1 = mesh.positions[t[2]] - a, v2 = x - a;
-  const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
-  const double den = d00 * d11 - d01 * d01;
-  if (!(den > 0)) return {0, 0, 0};
-  const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den;
-  return {1 - b1 - b2, b1, b2};
-}
-
 InputWalk::InputWalk(const TriangleMesh& input) : mesh_(input), across_(3 * input.num_faces(), kInvalidIndex) {
   // Undirected edges sorted: an edge of exactly two faces links them (either orientation).
   std::vector<std::tuple<Index, Index, Index>> edges;

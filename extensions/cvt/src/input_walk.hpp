@@ -4,16 +4,13 @@
 // straddle several input faces of one plane; their corners and the sites in them are mapped
 // back to the input this way.
 #include <gsp/mesh.hpp>
+#include <gsp/surface_point.hpp>   // affine_coordinates
 
 #include <array>
 #include <utility>
 #include <vector>
 
 namespace gsp::cvt::detail {
-
-// Affine coordinates of x (projected into the plane of `face`) with respect to its corners:
-// they sum to 1 and are all >= 0 inside the face. Zeros for a face of no area.
-std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x);
 
 class InputWalk {
  public:

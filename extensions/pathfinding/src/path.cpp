@@ -17,13 +17,8 @@ double polyline_length(const std::vector<PathPoint>& points) {
 }
 
 std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
-  const Triangle& t = mesh.triangles[f];
-  const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = x - a;
-  const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
-  const double den = d00 * d11 - d01 * d01;
-  if (!(den > 0)) return {1, 0, 0};
-  std::array<double, 3> b{0, (d11 * d20 - d01 * d21) / den, (d00 * d21 - d01 * d20) / den};
-  b[0] = 1 - b[1] - b[2];
+  std::array<double, 3> b = affine_coordinates(mesh, f, x);
+  if (b[0] == 0 && b[1] == 0 && b[2] == 0) return {1, 0, 0};   // a face of no area
   for (double& w : b) w = std::max(0.0, w);
   const double sum = b[0] + b[1] + b[2];
   for (double& w : b) w /= sum;

@@ -38,6 +38,11 @@ struct SurfacePoint {
   Vec3 position(const TriangleMesh& mesh) const;
 };
 
+// Affine coordinates of x (projected into the plane of `face`) with respect to the face's
+// corners 0, 1, 2: they sum to 1, and are all >= 0 where the projection lies in the face
+// (walks over faces and clamped weights build on this). Zeros for a face of no area.
+std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x);
+
 // Weights >= 0 that sum to 1 within 1e-6: what a face point handed to the library (a source, a
 // path end point) must have. NaN fails.
 inline bool are_barycentric(const std::array<double, 3>& w) {
