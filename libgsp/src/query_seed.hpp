@@ -23,7 +23,6 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     Index label;
   };
   std::vector<SeededFacePoint> face_points;   // multi-source runs only (see below)
-  std::vector<VertexSeed> corner_seeds;       // input-face corners of points found on the flipped faces
 
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
@@ -58,7 +57,11 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         const Triangle& corners = mesh().triangles[f];
         const Vec3 at = w[0] * mesh().positions[corners[0]] + w[1] * mesh().positions[corners[1]] +
                         w[2] * mesh().positions[corners[2]];
-        for (Index v : corners) corner_seeds.push_back({v, src.offset + distance(at, mesh().positions[v]), label});
+        for (Index v : corners) {
+          const double value = src.offset + distance(at, mesh().positions[v]);
+          vertex_seeds.push_back({v, value, label});
+          if (goal) goal->vertex_value(v, Real(value * scale));
+        }
         const auto [face, weights] = flip_replay().locate(f, corners, w, tri.triangles());
         f = face;
         for (int i = 0; i < 3; ++i) w[i] = weights[i];
@@ -97,10 +100,6 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         }
       }
     }
-  }
-  for (const VertexSeed& cs : corner_seeds) {
-    vertex_seeds.push_back(cs);
-    if (goal) goal->vertex_value(cs.vertex, Real(cs.value * scale));
   }
   // One seed per vertex, by vertex: of several sources at one vertex the smallest value, the
   // first source on ties. Every later step applies this list as it is.

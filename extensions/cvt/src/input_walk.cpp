@@ -1,31 +1,17 @@
 #include "input_walk.hpp"
 
+#include <gsp/connectivity.hpp>
+
 #include <algorithm>
-#include <cstdint>
-#include <tuple>
 
 namespace gsp::cvt::detail {
 
 InputWalk::InputWalk(const TriangleMesh& input) : mesh_(input), across_(3 * input.num_faces(), kInvalidIndex) {
-  // Undirected edges sorted: an edge of exactly two faces links them (either orientation).
-  std::vector<std::tuple<Index, Index, Index>> edges;
-  edges.reserve(3 * input.num_faces());
-  for (Index f = 0; f < input.num_faces(); ++f)
-    for (Index k = 0; k < 3; ++k) {
-      const Index a = input.triangles[f][k], b = input.triangles[f][(k + 1) % 3];
-      edges.emplace_back(std::min(a, b), std::max(a, b), 3 * f + k);
-    }
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0; i < edges.size();) {
-    std::size_t j = i + 1;
-    while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i]) &&
-           std::get<1>(edges[j]) == std::get<1>(edges[i]))
-      ++j;
-    if (j == i + 2) {
-      const Index h = std::get<2>(edges[i]), g = std::get<2>(edges[i + 1]);
-      across_[h] = g / 3, across_[g] = h / 3;
-    }
-    i = j;
+  // An edge of exactly two faces links them (either orientation): a radial ring of two.
+  const Connectivity conn = build_connectivity(input);
+  for (Index h = 0; h < across_.size(); ++h) {
+    const Index g = conn.radial_next[h];
+    if (g != h && conn.radial_next[g] == h && face_of(g) != face_of(h)) across_[h] = face_of(g);
   }
 }
 
