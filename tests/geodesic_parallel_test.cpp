@@ -84,6 +84,28 @@ TEST(ParallelPropagation, MatchesOneThreadOnARealMesh) {
   }
 }
 
+// A source whose seeds all lie in one thread's faces (a point inside one face; one vertex's
+// fan): the thread without seeds starts its rounds at the first mail it reads. It once walked
+// everything sent to it in one round without a limit (label-correcting, no limiter): 9-113
+// update steps per face on a 557k-vertex bunny from a point inside a face, 2.2 on one thread,
+// and on fertility (64-face stripes, many messages) up to 4.6x one thread's steps, 1.03-1.25x
+// now. Bar: 1.5x. Two threads: more threads than cores (4 on this 2-core machine) let a
+// descheduled thread's mail arrive late, behind the others' rounds: 1.8x once in 80 runs.
+TEST(ParallelPropagation, SeedsInOneThreadKeepTheLimiter) {
+  const TriangleMesh m = fertility();
+  const GeodesicSolver solver(m);
+  for (const Source& s : {Source::in_face(100, {0.2, 0.3, 0.5}), Source::in_face(5000, {0.6, 0.3, 0.1}),
+                          Source::at_vertex(7)}) {
+    GeodesicOptions one;
+    one.threads = 1;
+    const double steps1 = double(solver.compute({s}, one).stats.update_steps);
+    GeodesicOptions two;
+    two.threads = 2;
+    const double steps = double(solver.compute({s}, two).stats.update_steps);
+    EXPECT_LT(steps, 1.5 * steps1) << "source in element " << s.element;
+  }
+}
+
 // The preparation on two threads (SolverOptions::threads) builds the same solver as on one:
 // the pairs of steps write apart, and the corner angle sums split between the two pairs at
 // whatever face the connectivity's end finds them add up in face order all the same. A

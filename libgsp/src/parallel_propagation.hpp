@@ -81,7 +81,11 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     std::vector<QueueEntry<Real>> a, b;
     for (const QueueEntry<Real>& e : seeds)
       if (step.owner_of(face_of(e.halfedge)) == me) a.push_back(e);
-    Real limit = min_key(a) + f;
+    // A thread without seeds starts with the limit below everything, so the first mail it
+    // reads waits in `b` and sets its first round's limit. (With min_key of nothing, +inf,
+    // it walked all it was sent in one unlimited round: label-correcting without the
+    // limiter, 9-113 update steps per face from a point inside a face on two threads.)
+    Real limit = a.empty() ? -inf : min_key(a) + f;
     shared.finished[me].store(limit - f, std::memory_order_release);
     auto push = [&](const QueueEntry<Real>& n) {
       ++st.enqueued;
@@ -188,8 +192,9 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
       // round it starts at is known.
       shared.finished[me].store(-inf, std::memory_order_release);
       lock.unlock();
+      limit = -inf;   // the mail goes to `b`; the round starts at the nearest of it
       take_mail();
-      limit = min_key(a.empty() ? b : a) + f;
+      limit = min_key(b) + f;
       shared.finished[me].store(limit - f, std::memory_order_release);
       for (std::size_t i = 0; i < b.size();)
         if (b[i].dT < limit) a.push_back(b[i]), b[i] = b.back(), b.pop_back(); else ++i;
