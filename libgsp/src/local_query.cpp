@@ -86,7 +86,7 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
       for (Index i = 0; i < 3; ++i) {
         const Index v = input.triangles()[f][i];
         const double d = double(corner_distance(state[f], i)) * mean_edge;
-        if (!(d < values.vdist[v])) continue;
+        if (!(d < values.vdist[v]) || !corner_sees_source(state[f], i)) continue;   // corner_values.hpp
         if (values.vdist[v] == std::numeric_limits<double>::infinity()) values.vertices.push_back(v);
         values.vdist[v] = d, values.vlabel[v] = state[f].source(), from.push_back(v);
       }

@@ -22,21 +22,26 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
                                                 unsigned threads) const {
   // Per-vertex: the smallest sigma + |corner - virtual source| over the incident reached faces,
   // taken in the propagation's precision (the conversion to model units is monotonic, so the
-  // minimum and its label are those of the converted values). Per block of faces two passes:
-  // the corner distances, branch-free so the compiler vectorises them (an unreached face has
-  // sigma = +inf and gives +inf), then the minima, also without branches: which face wins a
-  // vertex is a coin toss the branch predictor loses.
+  // minimum and its label are those of the converted values); at a saddle, of the faces that
+  // see their source (corner_values.hpp), the others' only where none does: a value's tier is
+  // 0 when seen and reached, else 1, and the smallest (tier, value) wins. Per block of faces
+  // two passes: the corner distances, branch-free so the compiler vectorises them (an
+  // unreached face has sigma = +inf and gives +inf), then the minima, also without branches:
+  // which face wins a vertex is a coin toss the branch predictor loses.
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   const Real inf = std::numeric_limits<Real>::infinity();
-  auto scatter = [&](std::size_t first, std::size_t last, std::vector<Real>& dmin, std::vector<Index>& label_of) {
+  auto scatter = [&](std::size_t first, std::size_t last, std::vector<Real>& dmin, std::vector<Index>& label_of,
+                     std::vector<std::uint8_t>& tier) {
     dmin.assign(nv, inf);
     label_of.assign(nv, kInvalidIndex);
+    tier.assign(nv, 1);
     std::size_t reached_here = 0;
     constexpr std::size_t kBlock = 256;
     Real corner[3 * kBlock];
+    std::uint8_t seen[kBlock];
     for (std::size_t begin = first; begin < last; begin += kBlock) {
       const std::size_t end = std::min(last, begin + kBlock);
-      corner_distances(&state[begin], end - begin, corner);
+      corner_distances(&state[begin], end - begin, corner, seen);
       for (std::size_t fi = begin; fi < end; ++fi) {
         const bool reached = state[fi].reached();
         reached_here += reached;
@@ -44,32 +49,37 @@ std::size_t GeodesicSolver::Impl::vertex_minima(const Triangulation& tri, const 
         const Triangle& t = tri.triangles()[fi];
         for (Index i = 0; i < 3; ++i) {
           const Real d = corner[3 * (fi - begin) + i];
-          const bool better = d < dmin[t[i]];
+          const std::uint8_t level = ((seen[fi - begin] >> i) & 1) && d < inf ? 0 : 1;
+          const bool better = level < tier[t[i]] || (level == tier[t[i]] && d < dmin[t[i]]);
           dmin[t[i]] = better ? d : dmin[t[i]];
           label_of[t[i]] = better ? label : label_of[t[i]];
+          tier[t[i]] = better ? level : tier[t[i]];
         }
       }
     }
     return reached_here;
   };
+  std::vector<std::uint8_t> tier;
   const unsigned parts = detail::ranges_used(threads, nf);
-  if (parts == 1) return scatter(0, nf, vmin, vlabel);
+  if (parts == 1) return scatter(0, nf, vmin, vlabel, tier);
   // Several threads: each takes a range of faces into minima of its own (the first into the
   // result), then the minima are merged per vertex, an earlier range winning ties: the same
   // values and labels as one thread.
   std::vector<std::vector<Real>> part_min(parts - 1);
   std::vector<std::vector<Index>> part_label(parts - 1);
+  std::vector<std::vector<std::uint8_t>> part_tier(parts - 1);
   std::atomic<std::size_t> faces_reached{0};
   detail::for_ranges(parts, nf, [&](std::size_t begin, std::size_t end, unsigned part) {
-    faces_reached += part == 0 ? scatter(begin, end, vmin, vlabel)
-                               : scatter(begin, end, part_min[part - 1], part_label[part - 1]);
+    faces_reached += part == 0 ? scatter(begin, end, vmin, vlabel, tier)
+                               : scatter(begin, end, part_min[part - 1], part_label[part - 1], part_tier[part - 1]);
   });
   detail::for_ranges(threads, nv, [&](std::size_t begin, std::size_t end, unsigned) {
     for (std::size_t k = 0; k + 1 < parts; ++k)
       for (std::size_t v = begin; v < end; ++v) {
-        const bool better = part_min[k][v] < vmin[v];
+        const bool better = part_tier[k][v] < tier[v] || (part_tier[k][v] == tier[v] && part_min[k][v] < vmin[v]);
         vmin[v] = better ? part_min[k][v] : vmin[v];
         vlabel[v] = better ? part_label[k][v] : vlabel[v];
+        tier[v] = better ? part_tier[k][v] : tier[v];
       }
   });
   return faces_reached;
@@ -171,11 +181,23 @@ void GeodesicSolver::Impl::gather_reached(const FaceRecord<Real>* state, const s
   for (Index f : values.seeded)
     if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
   for (const VertexSeed& vs : vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
-  for (Index f : values.faces) {
-    const FaceRecord<Real>& st = state[f];
-    const Triangle& t = input.triangles()[f];
-    for (Index i = 0; i < 3; ++i) values.touch(t[i], double(corner_distance(st, i)) * mean_edge, st.source());
-  }
+  // The faces' corners, those that see their source first; the others (corner_values.hpp)
+  // only give the vertices that none of their faces gave a value: collected, then applied.
+  std::vector<VertexSeed> unseen;
+  for (int pass = 0; pass < 2; ++pass)
+    for (Index f : values.faces) {
+      const FaceRecord<Real>& st = state[f];
+      const Triangle& t = input.triangles()[f];
+      for (Index i = 0; i < 3; ++i) {
+        if (corner_sees_source(st, i) != (pass == 0)) continue;
+        const double d = double(corner_distance(st, i)) * mean_edge;
+        if (pass == 0)
+          values.touch(t[i], d, st.source());
+        else if (values.vdist[t[i]] == std::numeric_limits<double>::infinity())
+          unseen.push_back({t[i], d, st.source()});
+      }
+    }
+  for (const VertexSeed& u : unseen) values.touch(u.vertex, u.value, u.label);
 }
 
 template <class Real>

@@ -183,7 +183,8 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
       for (Index i = 0; i < 3; ++i) {
         const Index v = tri.triangles()[f][i];
         const Real d = corner_distance(state[f], i);
-        if (d < vmin[v]) vmin[v] = d, vlabel[v] = state[f].source(), changed_vertices.push_back(v);
+        if (d < vmin[v] && corner_sees_source(state[f], i))   // corner_values.hpp
+          vmin[v] = d, vlabel[v] = state[f].source(), changed_vertices.push_back(v);
       }
     from = &changed_vertices;
   }

@@ -2,6 +2,7 @@
 // The solver's prepared state (GeodesicSolver::Impl) and the pieces its queries share; internal
 // to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
 // bounded ones; query_seed.hpp and query_propagate.hpp hold the seeding and propagation both use.
+#include "corner_values.hpp"
 #include "flip_replay.hpp"
 #include "goal_directed.hpp"
 #include "index_maps.hpp"
@@ -355,42 +356,5 @@ inline bool seed_face(const std::vector<double>& length, Index f, const double b
 }
 
 inline const double kCornerWeights[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-
-// Distance of corner c's vertex through its face's virtual source (normalised units).
-template <class Real>
-inline Real corner_distance(const FaceRecord<Real>& r, Index corner) {
-  Real x = 0, y = 0;
-  if (corner == 1) x = r.len[0];
-  if (corner == 2) detail::canonical_corner2(r.len, x, y);
-  return r.sigma + std::sqrt((r.sx - x) * (r.sx - x) + (r.sy - y) * (r.sy - y));
-}
-
-// The corner distances of n <= 256 consecutive faces, d[3k + i] for corner i of face k, without
-// branches: copied into one array per field first so that the compiler vectorises the square
-// roots (4 or 8 at a time instead of one). +inf for an unreached face (its sigma is +inf).
-// Same values as corner_distance().
-template <class Real>
-inline void corner_distances(const FaceRecord<Real>* r, std::size_t n, Real* d) {
-  constexpr std::size_t kMax = 256;
-  Real sx[kMax], sy[kMax], sigma[kMax], l0[kMax], l1[kMax], l2[kMax], d0[kMax], d1[kMax], d2[kMax];
-  for (std::size_t k = 0; k < n; ++k)
-    sx[k] = r[k].sx, sy[k] = r[k].sy, sigma[k] = r[k].sigma, l0[k] = r[k].len[0], l1[k] = r[k].len[1],
-    l2[k] = r[k].len[2];
-  for (std::size_t k = 0; k < n; ++k) {
-    // Every operation unconditional, then selects: a division or square root under a
-    // condition keeps the loop scalar.
-    const bool edge = l0[k] > 0;
-    const Real base = edge ? l0[k] : Real(1);
-    const Real x_edge = (l0[k] * l0[k] + l2[k] * l2[k] - l1[k] * l1[k]) / (2 * base);
-    const Real x2 = edge ? x_edge : l2[k];
-    const Real h2 = l2[k] * l2[k] - x2 * x2;
-    const Real y_edge = std::sqrt(h2 > Real(0) ? h2 : Real(0));
-    const Real y2 = edge ? y_edge : Real(0);
-    d0[k] = sigma[k] + std::sqrt(sx[k] * sx[k] + sy[k] * sy[k]);
-    d1[k] = sigma[k] + std::sqrt((sx[k] - l0[k]) * (sx[k] - l0[k]) + sy[k] * sy[k]);
-    d2[k] = sigma[k] + std::sqrt((sx[k] - x2) * (sx[k] - x2) + (sy[k] - y2) * (sy[k] - y2));
-  }
-  for (std::size_t k = 0; k < n; ++k) d[3 * k] = d0[k], d[3 * k + 1] = d1[k], d[3 * k + 2] = d2[k];
-}
 
 }  // namespace gsp

@@ -124,6 +124,47 @@ inline TriangleMesh cylinder(int segments, int rings) {
   return m;
 }
 
+// A square plate [-a, a]^2 x [0, t] with a round through-hole of radius r (n rim segments),
+// its flat faces written as CAD exporters write them: a fan of slivers from each square corner
+// over its quarter of the rim, one triangle per side between two fans; the hole's wall and the
+// outer walls as quads split in two. Closed, genus 1; the rim's vertices are saddles. Vertex
+// index: bottom rim 0..n-1, bottom corners n..n+3, top rim n+4..2n+3, top corners 2n+4..2n+7.
+inline TriangleMesh plate_with_hole(double a, double r, double t, int n) {
+  TriangleMesh m;
+  const double pi = std::acos(-1.0);
+  const Index s = static_cast<Index>(n);
+  auto angle = [&](Index i) { return 2 * pi * double(i) / double(n) + 0.1; };
+  // The corner whose quarter of the rim vertex i faces (corners at 45, 135, 225, 315 degrees).
+  auto quarter = [&](Index i) { return Index(std::floor(std::fmod(angle(i), 2 * pi) / (pi / 2))) % 4; };
+  const double sx[4] = {1, -1, -1, 1}, sy[4] = {1, 1, -1, -1};
+  for (int z = 0; z < 2; ++z) {
+    for (Index i = 0; i < s; ++i) m.positions.push_back({r * std::cos(angle(i)), r * std::sin(angle(i)), z * t});
+    for (int k = 0; k < 4; ++k) m.positions.push_back({a * sx[k], a * sy[k], z * t});
+  }
+  auto rim = [&](int z, Index i) { return Index(z) * (s + 4) + i % s; };
+  auto corner = [&](int z, Index k) { return Index(z) * (s + 4) + s + k; };
+  for (int z = 0; z < 2; ++z)
+    for (Index i = 0; i < s; ++i) {
+      const Index k = quarter(i), k2 = quarter((i + 1) % s);
+      const Index c = corner(z, k), p = rim(z, i), q = rim(z, i + 1);
+      m.triangles.push_back(z == 1 ? Triangle{c, p, q} : Triangle{c, q, p});
+      if (k2 != k) {
+        const Index c2 = corner(z, k2);
+        m.triangles.push_back(z == 1 ? Triangle{c, q, c2} : Triangle{c, c2, q});
+      }
+    }
+  for (Index i = 0; i < s; ++i) {
+    m.triangles.push_back({rim(0, i), rim(0, i + 1), rim(1, i + 1)});
+    m.triangles.push_back({rim(0, i), rim(1, i + 1), rim(1, i)});
+  }
+  for (Index k = 0; k < 4; ++k) {
+    const Index k2 = (k + 1) % 4;
+    m.triangles.push_back({corner(0, k), corner(1, k2), corner(0, k2)});
+    m.triangles.push_back({corner(0, k), corner(1, k), corner(1, k2)});
+  }
+  return m;
+}
+
 // A strip of `quads` unit squares along x (a grid one square high): 2 (quads + 1) vertices,
 // 2 quads faces, one boundary loop.
 inline TriangleMesh strip(int quads) {
