@@ -23,23 +23,27 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     Index label;
   };
   std::vector<SeededFacePoint> face_points;   // multi-source runs only (see below)
+  // Vertex v (layout order) as a source at distance `value` (model units): its value, and
+  // every face of its fan with the virtual source at v, queued over the edge opposite v.
+  auto seed_vertex = [&](Index v, double value, Index label) {
+    vertex_seeds.push_back({v, value, label});
+    if (goal) goal->vertex_value(v, Real(value * scale));
+    for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
+      const Index c = tri.corners[k];
+      const Index f = face_of(c);
+      if (skipped_face[f]) continue;
+      if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, value * scale, label, state)) {
+        queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
+        if (seeded) seeded->push_back(f);
+      }
+    }
+  };
 
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const Source& src = sources[s];
     const Index label = static_cast<Index>(s);
     if (src.is_vertex()) {
-      const Index v = maps.vertex_to_layout(src.element);
-      vertex_seeds.push_back({v, src.offset, label});
-      if (goal) goal->vertex_value(v, Real(src.offset * scale));
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const Index f = face_of(c);
-        if (skipped_face[f]) continue;
-        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, src.offset * scale, label, state)) {
-          queue.push_back({next_halfedge(c), state[f].dT});   // the edge opposite v
-          if (seeded) seeded->push_back(f);
-        }
-      }
+      seed_vertex(maps.vertex_to_layout(src.element), src.offset, label);
     } else {
       const auto& b = src.barycentric;
       const double sum = b[0] + b[1] + b[2];
@@ -51,9 +55,8 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
         // corners get their straight in-face distance as their value (exact: the segment is on
         // the surface): the flipped face holding the point need not hold them, and one virtual
         // source per face could bend on the way (a CAD tray's long face: its far corner 18.6%
-        // long without). Only as values, not as seeds of their fans: seeded, they took the
-        // parallel speed limiter into its postponing mode and 152 update steps per face on a
-        // 2.2M-vertex mesh (docs/gsp-core.md).
+        // long without). Only as values, not as seeds of their fans (seed_vertex): seeded, the
+        // corpus's face points came out no better (malign MRE 0.2157 -> 0.2182%, session 29).
         const Triangle& corners = mesh().triangles[f];
         const Vec3 at = w[0] * mesh().positions[corners[0]] + w[1] * mesh().positions[corners[1]] +
                         w[2] * mesh().positions[corners[2]];
@@ -87,18 +90,7 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     const double py = w[0] * p[0][1] + w[1] * p[1][1] + w[2] * p[2][1];
     for (Index i = 0; i < 3; ++i) {
       const Index v = tri.triangles()[face][i];
-      const double offset = fp.source.offset + std::hypot(p[i][0] - px, p[i][1] - py);   // model units
-      vertex_seeds.push_back({v, offset, fp.label});
-      if (goal) goal->vertex_value(v, Real(offset * scale));
-      for (Index k = tri.corner_begin[v]; k < tri.corner_begin[v + 1]; ++k) {
-        const Index c = tri.corners[k];
-        const Index f = face_of(c);
-        if (skipped_face[f]) continue;
-        if (seed_face(length, f, kCornerWeights[corner_of(c)], scale, offset * scale, fp.label, state)) {
-          queue.push_back({next_halfedge(c), state[f].dT});
-          if (seeded) seeded->push_back(f);
-        }
-      }
+      seed_vertex(v, fp.source.offset + std::hypot(p[i][0] - px, p[i][1] - py), fp.label);   // model units
     }
   }
   // One seed per vertex, by vertex: of several sources at one vertex the smallest value, the
