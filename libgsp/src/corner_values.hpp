@@ -3,15 +3,15 @@
 // corners sigma + |corner - source|, and a vertex takes the smallest of its faces' values
 // (query_gather.hpp) or is lowered by it (the relaxation's rounds).
 //
-// At a saddle corner (angle sum above 2 pi, vertex_kinds.hpp) a face's value counts only when
-// its source lies in the face's own angle at that corner, i.e. the segment reaches the corner
-// through the face. A source outside that angle reaches the corner through other faces of the
-// fan, unfolded round the saddle, where a line can pass on a side no surface path takes and
-// come out short. Where none of a saddle's faces sees its source (a front arriving along an
-// edge), the plain smallest value stands. The case it mends: a hole in a CAD plate whose face
-// is a fan of slivers from rim to rim (the fence panels: a source on the hole's rim gave the
-// rim's far side the straight line across the hole, 19% short); docs/gsp-core.md, "Values at
-// saddle vertices".
+// At a saddle corner (angle sum above 2 pi by more than kSaddleExcess, vertex_kinds.hpp) a
+// face's value counts only when its source lies in the face's own angle at that corner, i.e.
+// the segment reaches the corner through the face. A source outside that angle reaches the
+// corner through other faces of the fan, unfolded round the saddle, where a line can pass on a
+// side no surface path takes and come out short. Where none of a saddle's faces sees its
+// source (a front arriving along an edge), the plain smallest value stands. The case it
+// mends: a hole in a CAD plate whose face is a fan of slivers from rim to rim (the fence
+// panels: a source on the hole's rim gave the rim's far side the straight line across the
+// hole, 19% short); docs/gsp-core.md, "Values at saddle vertices".
 #include "face_record.hpp"
 
 #include <cmath>
