@@ -181,23 +181,25 @@ void GeodesicSolver::Impl::gather_reached(const FaceRecord<Real>* state, const s
   for (Index f : values.seeded)
     if (!values.face_mark[f]) values.face_mark[f] = 1, values.faces.push_back(f);
   for (const VertexSeed& vs : vertex_seeds) values.touch(vs.vertex, vs.value, vs.label);
-  // The faces' corners, those that see their source first; the others (corner_values.hpp)
-  // only give the vertices that none of their faces gave a value: collected, then applied.
+  // The faces' corners; those whose face does not see its source (corner_values.hpp) only
+  // give the vertices that none of their faces gave a value: kept aside, then applied.
   std::vector<VertexSeed> unseen;
-  for (int pass = 0; pass < 2; ++pass)
-    for (Index f : values.faces) {
-      const FaceRecord<Real>& st = state[f];
-      const Triangle& t = input.triangles()[f];
-      for (Index i = 0; i < 3; ++i) {
-        if (corner_sees_source(st, i) != (pass == 0)) continue;
-        const double d = double(corner_distance(st, i)) * mean_edge;
-        if (pass == 0)
-          values.touch(t[i], d, st.source());
-        else if (values.vdist[t[i]] == std::numeric_limits<double>::infinity())
-          unseen.push_back({t[i], d, st.source()});
-      }
+  for (Index f : values.faces) {
+    const FaceRecord<Real>& st = state[f];
+    const Triangle& t = input.triangles()[f];
+    for (Index i = 0; i < 3; ++i) {
+      const double d = double(corner_distance(st, i)) * mean_edge;
+      if (corner_sees_source(st, i))
+        values.touch(t[i], d, st.source());
+      else
+        unseen.push_back({t[i], d, st.source()});
     }
-  for (const VertexSeed& u : unseen) values.touch(u.vertex, u.value, u.label);
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  for (VertexSeed& u : unseen)
+    if (values.vdist[u.vertex] != inf) u.vertex = kInvalidIndex;   // a seen value stands
+  for (const VertexSeed& u : unseen)
+    if (u.vertex != kInvalidIndex) values.touch(u.vertex, u.value, u.label);
 }
 
 template <class Real>
