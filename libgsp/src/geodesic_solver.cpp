@@ -28,6 +28,9 @@ std::size_t GeodesicSolver::num_faces() const { return impl_->mesh().num_faces()
 Index GeodesicSolver::face_memory_rank(Index face) const { return impl_->maps.face_to_layout(face); }
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
+std::size_t GeodesicSolver::window_corners() const {
+  return impl_->window_corner_count;
+}
 
 bool GeodesicSolver::needs_double() const {
   return (impl_->delaunay ? *impl_->delaunay : impl_->input).needs_double;
@@ -85,7 +88,10 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   const std::vector<detail::SourcePoint> points = source_points_for(sources, options);
   const std::vector<float> line_sources = line_sources_for(points, options);
   const float* lines = line_sources.empty() ? nullptr : line_sources.data();
-  propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr, lines);
+  const detail::WindowStore<Real> window_store = window_records<Real>(options);
+  detail::WindowRecord<Real>* windows = window_store.get();
+  propagate<Real>(tri, options, state.data(), queue, goal ? &*goal : nullptr, result.stats, nullptr, nullptr, lines,
+                  windows);
 
   std::vector<Real> vmin;
   std::vector<Index> vlabel;
@@ -97,7 +103,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
     for (const VertexSeed& vs : vertex_seeds)
       if (Real(vs.value * scale) < vmin[vs.vertex])
         vmin[vs.vertex] = Real(vs.value * scale), vlabel[vs.vertex] = vs.label;
-    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, lines, threads);
+    relax_vertices<Real>(tri, options, state.data(), queue, vmin, vlabel, result.stats, lines, windows, threads);
   }
   // Last on the values: nothing below the straight line (straight_line_bound.hpp), in layout
   // order (positions and values read in sequence).

@@ -21,6 +21,7 @@ template <class Real>
 struct LocalBuffers {
   detail::RecordArray<Real> state;   // pristine outside the last query's faces
   std::vector<QueueEntry<Real>> queue;
+  detail::WindowStore<Real> windows;   // carried windows: none written outside the last query's faces either
 };
 
 struct LocalWorkspace::State {
@@ -63,7 +64,8 @@ LocalField GeodesicSolver::compute_local(const std::vector<Source>& sources, con
 template <class Real>
 void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecord<Real>* state,
                                        std::vector<QueueEntry<Real>>& queue, LocalValues values,
-                                       PropagationStats& stats, const float* line_sources) const {
+                                       PropagationStats& stats, const float* line_sources,
+                                       detail::WindowRecord<Real>* windows) const {
   const double scale = 1.0 / mean_edge;
   std::vector<Index> changed_faces, from = values.vertices;
   for (int round = 0;; ++round) {
@@ -78,7 +80,7 @@ void GeodesicSolver::Impl::relax_local(const GeodesicOptions& options, FaceRecor
     // Every face offered a seed is reset after the query, whether or not it took it.
     seed_pseudo_sources(input, lowered, values.vdist, scale, values.vlabel, state, queue, changed_faces, &values.seeded);
     if (queue.empty()) return;
-    propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources,
+    propagate<Real>(input, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources, windows,
                     /*every_update=*/true);
     from.clear();
     for (Index f : changed_faces) {
@@ -124,6 +126,7 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
       r.sigma = r.dT = std::numeric_limits<Real>::infinity();
       r.tag = (r.tag & ~detail::kSourceMask) | detail::kNoSource;
       ws.face_mark[f] = 0;
+      if (buf.windows) buf.windows.get()[f].written = false;
     }
     ~Restore() {
       for (Index f : ws.faces) reset(f);
@@ -138,11 +141,17 @@ LocalField GeodesicSolver::Impl::run_local(const std::vector<Source>& sources, c
   const std::vector<detail::SourcePoint> points = source_points_for(sources, options);
   const std::vector<float> line_sources = line_sources_for(points, options);
   const float* lines = line_sources.empty() ? nullptr : line_sources.data();
-  propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces, lines);
+  detail::WindowRecord<Real>* windows = nullptr;
+  if (window_corner_count > 0 && options.carried_windows) {
+    if (!buf.windows) buf.windows = window_records<Real>(options);   // first such query
+    windows = buf.windows.get();
+  }
+  propagate<Real>(tri, options, buf.state.data(), buf.queue, nullptr, result.stats, &ws.seeded, &ws.faces, lines,
+                  windows);
 
   const LocalValues values{ws.vdist, ws.vlabel, ws.vertices, ws.faces, ws.face_mark, ws.seeded};
   gather_reached<Real>(buf.state.data(), ws.vertex_seeds, values);
-  if (options.vertex_relaxation) relax_local<Real>(options, buf.state.data(), buf.queue, values, result.stats, lines);
+  if (options.vertex_relaxation) relax_local<Real>(options, buf.state.data(), buf.queue, values, result.stats, lines, windows);
   result.stats.faces_reached = ws.faces.size();
   if (options.straight_line_bound && line_scale > 0) {
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(

@@ -45,13 +45,14 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
                                 const ProbeTable<Real>& probe,
                                 Real expand_limit, std::vector<QueueEntry<Real>>& seeds, Real f, unsigned threads,
                                 PropagationStats& stats, bool postpone = false, bool adaptive = false,
-                                const StraightLineTest& line = {}) {
+                                const StraightLineTest& line = {}, WindowRecord<Real>* windows = nullptr,
+                                const std::uint8_t* window_flags = nullptr) {
   const Real inf = std::numeric_limits<Real>::infinity();
   const unsigned shift = stripe_shift(num_faces, threads);
   struct Shared {
     std::mutex m;
     std::condition_variable cv;
-    std::vector<std::vector<RemoteStep<Real>>> inbox;
+    std::vector<Mailbox<Real>> inbox;
     std::vector<std::atomic<bool>> mail;
     // The limit of the last round each thread has finished (infinity while idle): a thread
     // starts its next round only when every other one has finished the round before the one
@@ -76,8 +77,9 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     inside_parallel_region() = true;
     PropagationStats& st = local_stats[me];
     UpdateStep<Real, true> step(faces, ring, probe, expand_limit, st, line);
-    std::vector<std::vector<RemoteStep<Real>>> outbox(threads);
+    std::vector<Mailbox<Real>> outbox(threads);
     step.partition(Index(me), Index(threads), shift, &outbox);
+    step.carry_windows(windows, window_flags);   // each thread writes its own faces' windows
     std::vector<QueueEntry<Real>> a, b;
     for (const QueueEntry<Real>& e : seeds)
       if (step.owner_of(face_of(e.halfedge)) == me) a.push_back(e);
@@ -96,22 +98,22 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
       for (unsigned k = 0; k < threads; ++k) {
         if (outbox[k].empty()) continue;
         std::lock_guard<std::mutex> lock(shared.m);
-        auto& in = shared.inbox[k];
-        in.insert(in.end(), outbox[k].begin(), outbox[k].end());
+        shared.inbox[k].append(outbox[k]);
         shared.mail[k].store(true, std::memory_order_release);
         outbox[k].clear();
         sent = true;
       }
       if (sent) shared.cv.notify_all();
     };
-    std::vector<RemoteStep<Real>> mail;
+    Mailbox<Real> mail;
     auto take_mail = [&] {
       {
         std::lock_guard<std::mutex> lock(shared.m);
         mail.swap(shared.inbox[me]);
         shared.mail[me].store(false, std::memory_order_relaxed);
       }
-      for (const RemoteStep<Real>& m : mail) step.apply(m, push);
+      for (const RemoteStep<Real>& m : mail.steps) step.apply(m, push);
+      for (const WindowedStep<Real>& m : mail.windowed) step.apply(m, push);
       mail.clear();
     };
     auto has_mail = [&] { return shared.mail[me].load(std::memory_order_acquire); };
@@ -216,6 +218,7 @@ void run_parallel_speed_limiter(FaceRecord<Real>* faces, std::size_t num_faces, 
     stats.stale_skipped += s.stale_skipped;
     stats.postponed += s.postponed;
     stats.straight_line_bends += s.straight_line_bends;
+    stats.window_bends += s.window_bends;
     stats.iterations = std::max(stats.iterations, s.iterations);
   }
   stats.switched_to_postpone = stats.switched_to_postpone || (shared.postpone.load() && !postpone);

@@ -29,7 +29,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
                                      std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal,
                                      PropagationStats& stats, std::vector<Index>* seeded,
                                      std::vector<Index>* reached, const float* line_sources,
-                                     bool every_update) const {
+                                     detail::WindowRecord<Real>* windows, bool every_update) const {
   const std::vector<double>& length = tri.length;
   const double scale = 1.0 / mean_edge;
   const Real inf = std::numeric_limits<Real>::infinity();
@@ -39,6 +39,8 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
   const detail::ProbeTable<Real> probe(heuristic, tri.delaunay);
   detail::UpdateStep<Real> step(state, tri.ring.data(), probe, limit, stats, line);
   step.collect_reached(reached, every_update);
+  const std::uint8_t* window_flags = tri.window_flags.empty() ? nullptr : tri.window_flags.data();
+  step.carry_windows(windows, window_flags);
   const Real f = Real(options.f), f0 = Real(options.f0), f1 = Real(options.f1);
   const unsigned threads = goal || reached ? 1 : query_threads(options, mesh().num_faces());
   const bool parallel = threads > 1 && !goal && !reached &&
@@ -52,7 +54,7 @@ void GeodesicSolver::Impl::propagate(const Triangulation& tri, const GeodesicOpt
       detail::run_parallel_speed_limiter(state, mesh().num_faces(), tri.ring.data(), probe,
                                          limit, queue, options.strategy == Strategy::hybrid_postpone ? f0 : f, threads,
                                          stats, options.strategy == Strategy::speed_limiter_postpone,
-                                         options.strategy == Strategy::speed_limiter, line);
+                                         options.strategy == Strategy::speed_limiter, line, windows, window_flags);
       return;
     }
     switch (options.strategy) {
@@ -158,7 +160,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
                                           FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
                                           std::vector<Real>& vmin, std::vector<Index>& vlabel,
                                           PropagationStats& stats, const float* line_sources,
-                                          unsigned threads) const {
+                                          detail::WindowRecord<Real>* windows, unsigned threads) const {
   const double scale = 1.0 / mean_edge;
   const Real limit = std::isfinite(options.max_distance) ? Real(options.max_distance * scale)
                                                          : std::numeric_limits<Real>::infinity();
@@ -175,7 +177,7 @@ void GeodesicSolver::Impl::relax_vertices(const Triangulation& tri, const Geodes
     stats.pseudo_sources += lowered.size();
     seed_pseudo_sources(tri, lowered, vmin, 1.0, vlabel, state, queue, changed_faces, nullptr);
     if (queue.empty()) return;
-    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources,
+    propagate<Real>(tri, options, state, queue, nullptr, stats, nullptr, &changed_faces, line_sources, windows,
                     /*every_update=*/true);
     // The changed faces' corners, and the vertices they lower: where the next round starts.
     changed_vertices.clear();

@@ -9,6 +9,7 @@
 #include "side_by_side.hpp"
 #include "solver_impl.hpp"
 #include "straight_line_bound.hpp"
+#include "window_corners.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/errors.hpp>
@@ -278,6 +279,20 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
           build_delaunay(true);   // its last tables on two threads too (the analysis ends first)
           timings.delaunay = lap();
         });
+  }
+  // Carried windows (3D lengths only: a caller's metric need not be flat where 3D is planar):
+  // which vertices bound them, then what each face of the triangulations asks (after the flips).
+  // Timed with the vertex analysis (--stats' build_phases).
+  if (!custom_lengths) {
+    const auto start = Clock::now();
+    const std::vector<std::uint8_t> corner = detail::window_corners(mesh(), input.ring, vertex_kind, skipped_face);
+    window_corner_count = std::size_t(std::count(corner.begin(), corner.end(), std::uint8_t(1)));
+    if (window_corner_count > 0)
+      for (Triangulation* t : {&input, delaunay.get()})
+        if (t)
+          t->window_flags = detail::window_face_flags(t->triangles(), t->ring, t->corner_begin, t->corners,
+                                                      mesh().positions, corner, skipped_face);
+    timings.vertex_analysis += std::chrono::duration<double>(Clock::now() - start).count();
   }
   if (line_scale > 0) {
     if (line_scale != 1) {

@@ -11,6 +11,7 @@
 #include "prefetch_corners.hpp"
 #include "queue_strategies.hpp"
 #include "straight_line_bound.hpp"
+#include "window_bounds.hpp"
 
 #include <gsp/connectivity.hpp>
 #include <gsp/geodesics.hpp>
@@ -48,6 +49,9 @@ struct Triangulation {
   std::vector<Index> corner_begin, corners;   // vertex -> its corners (3f + i), CSR
   bool needs_double = false;              // a face too thin for float lengths (Precision::automatic)
   bool delaunay = false;                  // intrinsic Delaunay (flipped, or the input needed no flip)
+  // Per face, what carried windows ask (window_face_flags(), window_corners.hpp); empty where
+  // no vertex bounds a window.
+  std::vector<std::uint8_t> window_flags;
 
   mutable std::atomic<bool> float_started{false}, double_started{false};   // a full query began
   mutable std::once_flag float_once, double_once;
@@ -188,6 +192,9 @@ struct GeodesicSolver::Impl {
   // passes the front on like a bridge vertex. CSR: group g is coincident[coincident_begin[g]..).
   std::vector<Index> coincident_begin{0}, coincident;
   std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
+  // Vertices that bound carried windows (window_corners.hpp); 0: the queries carry none. The
+  // per-vertex marks go once the triangulations' window_flags are made from them.
+  std::size_t window_corner_count = 0;
   double mean_edge = 1;
   bool custom_lengths = false;     // SolverOptions::edge_lengths given
   // How 3D bounds the lengths: 1 for 3D lengths, SolverOptions::edge_lengths_line_scale for
@@ -285,7 +292,8 @@ struct GeodesicSolver::Impl {
   template <class Real>
   void relax_vertices(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                       std::vector<QueueEntry<Real>>& queue, std::vector<Real>& vmin, std::vector<Index>& vlabel,
-                      PropagationStats& stats, const float* line_sources, unsigned threads = 1) const;
+                      PropagationStats& stats, const float* line_sources, detail::WindowRecord<Real>* windows,
+                      unsigned threads = 1) const;
   // Seeds the fans of `vertices` with a virtual source at the vertex, sigma = d[v] *
   // to_normalised; the faces that took it go to `changed` (and the queue), every face offered
   // one to `touched` when given.
@@ -320,14 +328,16 @@ struct GeodesicSolver::Impl {
                     LocalField& result) const;
   template <class Real>
   void relax_local(const GeodesicOptions& options, FaceRecord<Real>* state, std::vector<QueueEntry<Real>>& queue,
-                   LocalValues values, PropagationStats& stats, const float* line_sources) const;
+                   LocalValues values, PropagationStats& stats, const float* line_sources,
+                   detail::WindowRecord<Real>* windows) const;
   // line_sources: the query's sources for the update step's straight-line test
-  // (line_sources_for(); null: no test).
+  // (line_sources_for(); null: no test). windows: the query's carried windows, one per face
+  // (window_records(); null: none).
   template <class Real>
   void propagate(const Triangulation& tri, const GeodesicOptions& options, FaceRecord<Real>* state,
                  std::vector<QueueEntry<Real>>& queue, detail::TargetSet<Real>* goal, PropagationStats& stats,
                  std::vector<Index>* seeded, std::vector<Index>* reached, const float* line_sources,
-                 bool every_update = false) const;
+                 detail::WindowRecord<Real>* windows, bool every_update = false) const;
   // A query's sources in 3D (straight_line_bound.hpp), for the bound and the update step's
   // test: empty with caller-supplied lengths or with both switched off.
   std::vector<detail::SourcePoint> source_points_for(const std::vector<Source>& sources,
@@ -335,6 +345,13 @@ struct GeodesicSolver::Impl {
   // The same as the update step's test reads them; empty where the test is off.
   std::vector<float> line_sources_for(const std::vector<detail::SourcePoint>& points,
                                       const GeodesicOptions& options) const;
+  // A query's carried windows (window_bounds.hpp), one per face, none written yet; none where
+  // the query has none: no vertex bounds a window, or GeodesicOptions::carried_windows is off.
+  template <class Real>
+  detail::WindowStore<Real> window_records(const GeodesicOptions& options) const {
+    if (window_corner_count == 0 || !options.carried_windows) return {};
+    return detail::WindowStore<Real>(mesh().num_faces());
+  }
 };
 
 // Seeds face f with a source at barycentric point b of the face (canonical coordinates are

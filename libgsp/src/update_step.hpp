@@ -7,6 +7,8 @@
 #include "face_record.hpp"
 #include "probe_table.hpp"
 #include "ring_links.hpp"
+#include "window_bounds.hpp"
+#include "window_corners.hpp"
 
 #include <gsp/geodesics.hpp>
 #include <gsp/intrinsic/corner_rules.hpp>
@@ -47,6 +49,28 @@ struct RemoteStep {
   bool h_dir;
 };
 
+// The same from a face with window flags (carried windows): the sending face's window in its
+// edge frame comes along. Apart from the plain steps so that those stay 32 bytes.
+template <class Real>
+struct WindowedStep {
+  RemoteStep<Real> step;
+  WindowSides sides;
+};
+
+// One thread's messages to another.
+template <class Real>
+struct Mailbox {
+  std::vector<RemoteStep<Real>> steps;
+  std::vector<WindowedStep<Real>> windowed;
+  bool empty() const { return steps.empty() && windowed.empty(); }
+  void append(const Mailbox& m) {
+    steps.insert(steps.end(), m.steps.begin(), m.steps.end());
+    windowed.insert(windowed.end(), m.windowed.begin(), m.windowed.end());
+  }
+  void clear() { steps.clear(), windowed.clear(); }
+  void swap(Mailbox& m) { steps.swap(m.steps), windowed.swap(m.windowed); }
+};
+
 // What the update step needs to keep its straight updates above the straight line in 3D
 // (UpdateStep::try_update): the propagation's triangles (layout vertex indices) and the
 // vertices and sources of straight_line_bound.hpp's scaled_positions / scaled_sources. All
@@ -73,12 +97,22 @@ class UpdateStep {
     reached_ = faces, every_update_ = every_update;
   }
 
+  // Carried windows (window_bounds.hpp; docs/gsp-core.md, rule 10): `records` per face (this
+  // query's), `flags` per face (window_face_flags(), window_corners.hpp); either null: none.
+  void carry_windows(WindowRecord<Real>* records, const std::uint8_t* flags) {
+    windows_ = records && flags ? records : nullptr;
+    window_flags_ = records && flags ? flags : nullptr;
+  }
+
   Real key(const QueueEntry<Real>& e) const { return e.dT; }
   bool is_stale(const QueueEntry<Real>& e) const { return faces_[face_of(e.halfedge)].dT < e.dT; }
 
   // Starts loading the record an entry will update first (the face across its edge): on
   // meshes whose state outgrows the L2 cache that load is the step's main stall.
-  void prefetch(const QueueEntry<Real>& e) const {
+  // Always inlined: out of line, GCC's pure-function analysis sees a const function without
+  // side effects and drops the call, prefetches and all (it did, once the body grew a line:
+  // the queries on 2.2M faces 25-45% slower).
+  [[gnu::always_inline]] void prefetch(const QueueEntry<Real>& e) const {
     const Index f = face_of(ring_[e.halfedge] & kRingIndexMask);
     __builtin_prefetch(&faces_[f]);
     if (line_.triangles) __builtin_prefetch(&line_.triangles[f]);
@@ -102,15 +136,34 @@ class UpdateStep {
       canonical_frame(u.len, corner_of(h), vu).to_edge(u.sx, u.sy, hx, hy);
       e1h = vu.e1;
     }
-    const Real sigma = u.sigma;
-    const Index source = u.source();
+    // Two instances of the walk: with carried windows and without. A face without window flags
+    // has no window to send, and the faces across its edges none to take from it (the crossed
+    // edge's ends and its plane are the sending face's too): the step as it was.
+    // The windowed one is kept out of line: inlined beside the plain one it cost the plain
+    // walk registers (on 2.2M faces 25-45% of its time, though only 4% more instructions).
+    if (windows_ && window_flags_[face_of(h)])
+      walk_windowed(h, hx, hy, e1h, u.sigma, u.source(), sides_in_edge_frame(h, u), push);
+    else
+      walk_ring<false>(h, hx, hy, e1h, u.sigma, u.source(), WindowSides::none(), push);
+  }
 
+  template <class Push>
+  [[gnu::noinline]] void walk_windowed(Index h, Real hx, Real hy, Real e1h, Real sigma, Index source,
+                                       const WindowSides& sides, Push&& push) {
+    walk_ring<true>(h, hx, hy, e1h, sigma, source, sides, push);
+  }
+
+  // The steps from halfedge h (the source in its edge frame) into every other face of its
+  // radial ring.
+  template <bool Windows, class Push>
+  void walk_ring(Index h, Real hx, Real hy, Real e1h, Real sigma, Index source, const WindowSides& sides,
+                 Push&& push) {
     std::uint64_t steps = 0;
     Index link = ring_[h];
     const bool h_dir = (link & kRingSelfDir) != 0;
     for (Index g = link & kRingIndexMask; g != h;) {
       ++steps;
-      step_into(g, link, h_dir, hx, hy, e1h, sigma, source, push);
+      step_into<Windows>(g, link, h_dir, hx, hy, e1h, sigma, source, sides, push);
       if (link & kRingPair) break;
       link = ring_[g];
       g = link & kRingIndexMask;
@@ -120,57 +173,96 @@ class UpdateStep {
 
   // The step into the face of halfedge g; a face another thread owns gets it as a message
   // (parallel runs only).
-  template <class Push>
-  void step_into(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source, Push&& push) {
+  template <bool Windows, class Push>
+  void step_into(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source,
+                 const WindowSides& sides, Push&& push) {
     if constexpr (Partitioned) {
       const Index owner = owner_of(face_of(g));
       if (owner != own_) {
-        (*outbox_)[owner].push_back({g, link, hx, hy, e1h, sigma, source, h_dir});
+        const RemoteStep<Real> m{g, link, hx, hy, e1h, sigma, source, h_dir};
+        if constexpr (Windows) (*outbox_)[owner].windowed.push_back({m, sides});
+        else (*outbox_)[owner].steps.push_back(m);
         return;
       }
     }
-    try_update(g, link, h_dir, hx, hy, e1h, sigma, source, push);
+    try_update<Windows>(g, link, h_dir, hx, hy, e1h, sigma, source, sides, push);
   }
 
   // One update step: the source (hx, hy in the sending halfedge's edge frame, e1h that edge's
   // length, sigma, label) unfolded over ring link `link` into the face of halfedge g. Its
   // steps, each below: unfold, choose_path (the heuristic's probe and the corner rules), the
-  // path's values, the straight-line test, accept.
-  template <class Push>
-  void try_update(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source, Push&& push) {
+  // path's values, the carried window, the straight-line test, accept. `sides`: the sending
+  // face's window (its edge frame), read only with carried windows.
+  template <bool Windows, class Push>
+  void try_update(Index g, Index link, bool h_dir, Real hx, Real hy, Real e1h, Real sigma, Index source,
+                  const WindowSides& sides, Push&& push) {
     FaceRecord<Real>& t = faces_[face_of(g)];
     const Index cj = corner_of(g);
     const EdgeView<Real> v = edge_view(t.len, cj);
     const Unfolded u = unfold(v, link, h_dir, hx, hy, e1h);
     int probed = 0;   // what the probe alone said
-    const int kind = choose_path(t, cj, v, u, probed);
+    Real qx = 0, qy = 0;   // where it looked from
+    const int kind = choose_path(t, cj, v, u, probed, qx, qy);
     Path p = path_of(kind, sigma, v.e1, u);
     if (!improves(t, p.dT, p.sigma)) return;
+    bool straight = kind == 0;
+    WindowSides own;            // the window T keeps if it takes the straight path (Windows only)
+    std::uint8_t flags = 0;     // T's window_face_flags()
+    if constexpr (Windows) {
+      own = WindowSides::none();
+      flags = window_flags_[face_of(g)];
+    }
+    // The sending face's window comes along only over an edge between coplanar faces: in a
+    // planar region a bend at a hiding rim vertex is the true path; on curved surfaces GSP's
+    // straight values below exact and bent ones above cancel.
+    if (Windows && straight && (flags & (kWindowEdge0 << cj)) && sides.any()) {
+      own = unfold_sides(sides, same_direction(link, h_dir), float(e1h));
+      const int k = hidden_by(own, u.sx, u.sy, qx, qy, v.px + Real(kWindowLooseLambda) * (u.cx - v.px),
+                              v.py + Real(kWindowLooseLambda) * (u.cy - v.py), v.e1);
+      if (k >= 0 && well_shaped(t)) {
+        // The source's line passed the window's bound on its hidden side: the path bends at
+        // the bound (a virtual source at a vertex that is not T's own corner).
+        const Real wx = Real(own.x[k]), wy = Real(own.y[k]);
+        const Real s = sigma + std::sqrt((wx - u.sx) * (wx - u.sx) + (wy - u.sy) * (wy - u.sy));
+        p = {s, s + std::sqrt((u.cx - wx) * (u.cx - wx) + (u.cy - wy) * (u.cy - wy)), wx, wy};
+        if (!improves(t, p.dT, p.sigma)) return;
+        ++stats_.window_bends;
+        straight = false;
+      }
+    }
     // A straight path that reaches the face's new corner P shorter than the straight line in
     // 3D does not exist: its unfolding passed a vertex on a side no surface path takes. It
     // bends instead, where the probe said or else at the end of the shorter bend (A's and B's
     // values came with the sending face, tested there; docs/gsp-core.md, rule 8). Tested only
     // on a path the face takes: a bend is never shorter than the straight path, so where the
     // face refuses the straight one it refuses the bend too.
-    if (kind == 0 && line_.sources && straight_below_line(g, cj, v, u, sigma, source)) {
+    if (straight && line_.sources && straight_below_line(g, cj, v, u, sigma, source)) {
       ++stats_.straight_line_bends;
       p = path_of(probed != 0 ? probed : shorter_bend(u, v.e1), sigma, v.e1, u);
       if (!improves(t, p.dT, p.sigma)) return;
+      straight = false;
     }
     accept(g, t, cj, v, p, source, push);
+    if constexpr (Windows)
+      if (straight && flags) keep_window(g, t, cj, v, u, own, flags);
   }
 
   // A step sent by another thread's expand() (RemoteStep; counted there), applied by the
   // face's owner.
   template <class Push>
   void apply(const RemoteStep<Real>& m, Push&& push) {
-    try_update(m.g, m.link, m.h_dir, m.hx, m.hy, m.e1h, m.sigma, m.source, push);
+    try_update<false>(m.g, m.link, m.h_dir, m.hx, m.hy, m.e1h, m.sigma, m.source, WindowSides::none(), push);
+  }
+  template <class Push>
+  [[gnu::noinline]] void apply(const WindowedStep<Real>& w, Push&& push) {
+    const RemoteStep<Real>& m = w.step;
+    try_update<true>(m.g, m.link, m.h_dir, m.hx, m.hy, m.e1h, m.sigma, m.source, w.sides, push);
   }
 
   // Parallel runs: the faces come in stripes of 2^stripe_shift consecutive faces, dealt to the
   // threads in turn; this step owns the stripes of thread `me`, steps into other faces go to
   // outbox[owner] instead.
-  void partition(Index me, Index threads, unsigned stripe_shift, std::vector<std::vector<RemoteStep<Real>>>* outbox) {
+  void partition(Index me, Index threads, unsigned stripe_shift, std::vector<Mailbox<Real>>* outbox) {
     own_ = me, threads_ = threads, stripe_shift_ = stripe_shift, outbox_ = outbox;
   }
   // Whether face record t takes a path of centroid distance dT and sigma. Only a clearly
@@ -222,11 +314,15 @@ class UpdateStep {
     Real sigma, dT, ex, ey;
   };
 
+  // Whether the sending and the receiving face walk their shared edge the same way (they
+  // disagree in orientation).
+  static bool same_direction(Index link, bool h_dir) { return ((link & kRingNextDir) != 0) == h_dir; }
+
   // Unfold into g's frame (T on +y): y flips; x is measured from the other end unless the
   // two faces disagree in orientation and walk the edge the same way.
   static Unfolded unfold(const EdgeView<Real>& v, Index link, bool h_dir, Real hx, Real hy,
                                                 Real e1h) {
-    const bool same_dir = ((link & kRingNextDir) != 0) == h_dir;
+    const bool same_dir = same_direction(link, h_dir);
     // sy <= 0: the source lies on U's side, as it should
     return {same_dir ? hx : e1h - hx, -hy, (v.px + v.e1) * Real(1.0 / 3.0), v.py * Real(1.0 / 3.0)};
   }
@@ -244,7 +340,7 @@ class UpdateStep {
   // 2 at B. The heuristic's probe decides (probed: its answer), then the corner rules
   // (gsp/intrinsic/corner_rules.hpp) have the last word at A and B.
   int choose_path(const FaceRecord<Real>& t, Index cj, const EdgeView<Real>& v,
-                                         const Unfolded& u, int& probed) const {
+                                         const Unfolded& u, int& probed, Real& probe_x, Real& probe_y) const {
     const Real sx = u.sx, sy = u.sy, cx = u.cx, cy = u.cy, e1 = v.e1;
     if (!(sy <= 0)) {
       // The source lies on T's side of the edge (the paper's same-side case): no straight
@@ -261,6 +357,7 @@ class UpdateStep {
       qx = v.px + lambda * (cx - v.px);
       qy = v.py + lambda * (cy - v.py);
     }
+    probe_x = qx, probe_y = qy;
     // Does the segment Q -> S cross AB? Division-free form of the paper's
     // t = Qx + alpha (Sx - Qx), scaled by (qy - sy) >= 0.
     const Real tq = qx * -sy + sx * qy;
@@ -305,6 +402,66 @@ class UpdateStep {
     return below_straight_line(g, cj, sigma + std::sqrt(dx * dx + dy * dy), source);
   }
 
+  // Face U's window (sending over halfedge h) in h's edge frame; none where U was seeded since
+  // it was written.
+  WindowSides sides_in_edge_frame(Index h, const FaceRecord<Real>& u) const {
+    const WindowRecord<Real>& w = windows_[face_of(h)];
+    if (!w.holds(u.dT)) return WindowSides::none();
+    if (corner_of(h) == 0 && u.len[0] > 0) return w.sides;   // the canonical frame is h's
+    const EdgeView<Real> vu = edge_view(u.len, corner_of(h));
+    const CanonicalFrame<Real> fr = canonical_frame(u.len, corner_of(h), vu);
+    WindowSides e = w.sides;
+    for (int k = 0; k < 2; ++k) {
+      if (!w.sides.has(k)) continue;
+      Real x, y;
+      fr.to_edge(Real(w.sides.x[k]), Real(w.sides.y[k]), x, y);
+      e.x[k] = float(x), e.y[k] = float(y);
+    }
+    return e;
+  }
+
+  // Whether a window may bend a step into face record t: not a sliver (kWindowMaxAspect: a
+  // window bend taken for a long sliver near one end bends all of it).
+  static bool well_shaped(const FaceRecord<Real>& t) {
+    const Real a = t.len[0], b = t.len[1], c = t.len[2];
+    const Real lmax = std::max({a, b, c}), half = (a + b + c) / 2;
+    const Real area = std::sqrt(std::max(half * (half - a) * (half - b) * (half - c), Real(0)));
+    return area > 0 && lmax * lmax < Real(2 * kWindowMaxAspect) * area;
+  }
+
+  // After T (halfedge g, corner cj, window_face_flags() `flags`) took a straight path: its
+  // window. It keeps the sending face's (`own`, in g's edge frame) and adds the crossed edge's
+  // ends that bound windows. Written only where there is one: a record whose stamp is not the
+  // face's dT (a bend or a seed since) reads as none.
+  void keep_window(Index g, const FaceRecord<Real>& t, Index cj, const EdgeView<Real>& v, const Unfolded& u,
+                   WindowSides s, std::uint8_t flags) {
+    const Real sx = u.sx, sy = u.sy, e1 = v.e1;
+    const Real near = Real(kWindowNearSource) * e1;
+    const Index cb = cj == 2 ? 0 : cj + 1;
+    if ((flags & (kWindowCorner0 << cj)) && sx * sx + sy * sy > near * near) {   // A at the origin: B's side seen
+      const int k = side_towards(Real(0), Real(0), sx, sy, e1, Real(0));
+      if (k >= 0) tighten(s, k, Real(0), Real(0), sx, sy);
+    }
+    if ((flags & (kWindowCorner0 << cb)) && (e1 - sx) * (e1 - sx) + sy * sy > near * near) {   // B: A's side
+      const int k = side_towards(e1, Real(0), sx, sy, Real(0), Real(0));
+      if (k >= 0) tighten(s, k, e1, Real(0), sx, sy);
+    }
+    if (!(cj == 0 && e1 > 0)) {
+      const CanonicalFrame<Real> fr = canonical_frame(t.len, cj, v);
+      for (int k = 0; k < 2; ++k) {
+        if (!s.has(k)) continue;
+        Real x, y;
+        fr.to_canonical(Real(s.x[k]), Real(s.y[k]), x, y);
+        s.x[k] = float(x), s.y[k] = float(y);
+      }
+    }
+    if (!s.any()) return;
+    WindowRecord<Real>& w = windows_[face_of(g)];
+    w.sides = s;
+    w.stamp = t.dT;
+    w.written = true;
+  }
+
   // T takes path p: its record gets the new virtual source (in T's canonical frame), and T's
   // other two edges are queued unless T lies wholly beyond the distance limit.
   template <class Push>
@@ -347,7 +504,9 @@ class UpdateStep {
   bool every_update_ = false;
   Index own_ = 0, threads_ = 1;
   unsigned stripe_shift_ = 31;
-  std::vector<std::vector<RemoteStep<Real>>>* outbox_ = nullptr;
+  std::vector<Mailbox<Real>>* outbox_ = nullptr;
+  WindowRecord<Real>* windows_ = nullptr;        // carried windows: null when off
+  const std::uint8_t* window_flags_ = nullptr;
   PropagationStats& stats_;
 };
 

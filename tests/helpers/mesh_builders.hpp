@@ -165,6 +165,42 @@ inline TriangleMesh plate_with_hole(double a, double r, double t, int n) {
   return m;
 }
 
+// A plate of thickness t round a hole of radius r, both circles n-gons (outer radius R), its
+// flat faces in k rings of well-shaped triangles (each ring's vertices turned half a segment
+// against the last): a CAD part meshed by a careful mesher. Closed, genus 1; the hole's rim
+// vertices are saddles, the rings' vertices inside the faces flat.
+inline TriangleMesh ringed_plate_with_hole(double R, double r, double t, int n, int k) {
+  TriangleMesh m;
+  const double pi = std::acos(-1.0);
+  std::vector<std::vector<Index>> ring(2 * std::size_t(k + 1));
+  for (int z = 0; z < 2; ++z)
+    for (int j = 0; j <= k; ++j) {
+      const double rad = r + (R - r) * j / k, off = k > 1 ? 0.5 * j * 2 * pi / n : 0;
+      for (int i = 0; i < n; ++i) {
+        ring[std::size_t(z * (k + 1) + j)].push_back(Index(m.positions.size()));
+        m.positions.push_back({rad * std::cos(2 * pi * i / n + off), rad * std::sin(2 * pi * i / n + off), z * t});
+      }
+    }
+  auto at = [&](int z, int j, int i) { return ring[std::size_t(z * (k + 1) + j)][std::size_t(i % n)]; };
+  auto add = [&](Triangle tr, bool flip) { m.triangles.push_back(flip ? Triangle{tr[2], tr[1], tr[0]} : tr); };
+  for (int z = 0; z < 2; ++z)
+    for (int j = 0; j < k; ++j)
+      for (int i = 0; i < n; ++i) {
+        const Index a0 = at(z, j, i), a1 = at(z, j, i + 1), b0 = at(z, j + 1, i), b1 = at(z, j + 1, i + 1);
+        if (k > 1) {
+          add({a0, b0, a1}, z == 0), add({a1, b0, b1}, z == 0);
+        } else {
+          add({a0, b1, a1}, z == 0), add({a0, b0, b1}, z == 0);
+        }
+      }
+  for (int j : {0, k})
+    for (int i = 0; i < n; ++i) {
+      const Index a0 = at(0, j, i), a1 = at(0, j, i + 1), b0 = at(1, j, i), b1 = at(1, j, i + 1);
+      add({a0, a1, b1}, j != k), add({a0, b1, b0}, j != k);
+    }
+  return m;
+}
+
 // A strip of `quads` unit squares along x (a grid one square high): 2 (quads + 1) vertices,
 // 2 quads faces, one boundary loop.
 inline TriangleMesh strip(int quads) {

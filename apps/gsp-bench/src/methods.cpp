@@ -26,6 +26,7 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
       {Method::gsp_no_relax, "gsp-no-relax", "GSP without the vertex relaxation (per-face virtual sources alone)", false},
       {Method::gsp_no_line_test, "gsp-no-line-test", "GSP without the update step's straight-line test (rule 8; the final bound kept)", false},
+      {Method::gsp_no_windows, "gsp-no-windows", "GSP without the carried windows (rule 10)", false},
       {Method::gsp_no_line, "gsp-no-line", "GSP without the straight-line bound (values below the segment kept)", false},
       {Method::gsp_2threads, "gsp-2threads", "GSP's parallel propagation on 2 threads (time is wall time)", false},
       {Method::gsp_4threads, "gsp-4threads", "GSP's parallel propagation on 4 threads (time is wall time)", false},
@@ -224,6 +225,7 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::gsp_no_relax: go.vertex_relaxation = false; break;
     case Method::gsp_no_line: go.straight_line_bound = false; break;
     case Method::gsp_no_line_test: go.straight_line_test = false; break;
+    case Method::gsp_no_windows: go.carried_windows = false; break;
     case Method::gsp_random_layout: return std::make_unique<RandomLayoutRunner>(mesh, seed);
     case Method::dijkstra: return std::make_unique<DijkstraRunner>(mesh);
     case Method::heat: return std::make_unique<HeatRunner>(mesh, reference::HeatMethodMode::direct);

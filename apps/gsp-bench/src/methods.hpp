@@ -25,6 +25,7 @@ enum class Method {
   gsp_input_faces,     // on the input triangles instead of their intrinsic Delaunay flip
   gsp_no_relax,        // without the vertex relaxation (per-face virtual sources alone, the paper's)
   gsp_no_line_test,    // without the update step's straight-line test (rule 8)
+  gsp_no_windows,      // without the carried windows (rule 10)
   gsp_no_line,         // without the straight-line bound (the propagation's own values below it)
   gsp_2threads,        // the parallel propagation on 2 threads (GeodesicOptions::threads)
   gsp_4threads,        // ... on 4 threads

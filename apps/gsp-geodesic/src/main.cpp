@@ -46,6 +46,7 @@ void report_result(cli::Context& ctx, const GeodesicResult& r, std::size_t faces
   ops["pseudo_sources"] = r.stats.pseudo_sources;
   ops["relaxation_rounds"] = r.stats.relaxation_rounds;
   ops["straight_line_bends"] = r.stats.straight_line_bends;
+  ops["window_bends"] = r.stats.window_bends;
   ops["raised_to_line"] = r.stats.raised_to_line;
 }
 
@@ -178,6 +179,7 @@ void run(cli::Context& ctx, const Options& o) {
     }
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
+    ctx.operations()["window_corners"] = solver.window_corners();
     ctx.stats()["memory"]["state_bytes_per_vertex"] =
         solver.num_vertices() ? double(solver.state_bytes(precision)) / double(solver.num_vertices()) : 0.0;
     if (o.separate || o.matrix) {

@@ -108,6 +108,12 @@ struct GeodesicOptions {
   // wrong value is not passed on. Off only to measure what it changes (gsp-bench's
   // gsp-no-line-test). With SolverOptions::edge_lengths as the bound above.
   bool straight_line_test = true;
+  // Carried windows (docs/gsp-core.md, rule 10): a face remembers the rim vertices of planar
+  // regions its source's line passed, and a straight update whose line passes one on its
+  // hidden side bends there (a source carried round a hole in a CAD plate no longer cuts
+  // across it). Only on meshes with such vertices (none with SolverOptions::edge_lengths); off
+  // only to measure what it changes (gsp-bench's gsp-no-windows).
+  bool carried_windows = true;
 };
 
 // The virtual source a face ended up with: the geodesic to any point p of the face is the
@@ -137,6 +143,10 @@ struct PropagationStats {
   // Straight updates that would have put a face's corner below the straight line from its
   // source (in 3D) and bent instead (docs/gsp-core.md, rule 8; not with caller-supplied lengths).
   std::uint64_t straight_line_bends = 0;
+  // Straight updates whose line had passed a vertex bounding its source's window (a rim vertex
+  // of a planar region, carried along) on the hidden side and bent there instead (docs/gsp-core.md,
+  // rule 10).
+  std::uint64_t window_bends = 0;
   // Vertices whose value was below the straight line from the nearest source by more than
   // 1e-6 and were raised to it (GeodesicOptions::straight_line_bound): the safety net after
   // the propagation, which rule 8 leaves almost nothing to do.
@@ -197,7 +207,8 @@ struct SolverTimings {
   double build = 0;    // connectivity, radial rings, per-halfedge tables, intrinsic Delaunay flips
   // The parts of `build`: connectivity (radial rings and vertex corners; on two threads the
   // input's lengths beside it), the input's triangulation (lengths, links), the vertices'
-  // analysis (bridge and coincident vertices, flat / saddle kinds) and the intrinsic Delaunay
+  // analysis (bridge and coincident vertices, flat / saddle kinds, after the flips the window
+  // corners and the faces' window flags) and the intrinsic Delaunay
   // triangulation (winding and flips; on two threads the analysis beside it).
   double connectivity = 0, input_tables = 0, vertex_analysis = 0, delaunay = 0;
 };
@@ -273,6 +284,9 @@ class GeodesicSolver {
   Index face_memory_rank(Index face) const;
   const SolverTimings& timings() const;
   std::size_t intrinsic_flips() const;   // edges flipped to make the intrinsic Delaunay triangulation
+  // Vertices that bound carried windows (saddles on a planar region's rim; docs/gsp-core.md,
+  // rule 10); 0: the queries carry none.
+  std::size_t window_corners() const;
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
   // True where a face of the triangulation vertex-source queries run on is too thin for
   // single-precision lengths (Precision::automatic then runs in double).

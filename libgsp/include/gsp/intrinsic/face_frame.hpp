@@ -21,7 +21,7 @@ struct EdgeView {
 };
 
 template <class Real>
-inline EdgeView<Real> edge_view(const Real len[3], Index j) {
+[[gnu::always_inline]] inline EdgeView<Real> edge_view(const Real len[3], Index j) {
   const Real e1 = len[j], e2 = len[j == 2 ? 0 : j + 1], e3 = len[j == 0 ? 2 : j - 1];
   if (!(e1 > 0)) return {Real(0), Real(0), e3};
   const Real px = (e1 * e1 + e3 * e3 - e2 * e2) / (2 * e1);
@@ -47,7 +47,7 @@ struct CanonicalFrame {
 };
 
 template <class Real>
-inline CanonicalFrame<Real> canonical_frame(const Real len[3], Index j, const EdgeView<Real>& v) {
+[[gnu::always_inline]] inline CanonicalFrame<Real> canonical_frame(const Real len[3], Index j, const EdgeView<Real>& v) {
   // Corner 0 and the direction to corner 1, in the edge frame of halfedge j (A = corner j at
   // the origin, B = corner j+1 at (e1, 0), P = corner j+2 at (px, py)). Written per case, not
   // through arrays indexed by j: this runs twice per update step.

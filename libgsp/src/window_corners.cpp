@@ -1,0 +1,108 @@
+#include "window_corners.hpp"
+
+#include "ring_links.hpp"
+#include "window_bounds.hpp"
+
+#include <gsp/intrinsic/vertex_kinds.hpp>
+
+#include <cmath>
+
+namespace gsp::detail {
+
+namespace {
+
+// Whether two faces' normals (unnormalised; `flip`: the faces disagree in orientation along
+// their edge) agree within kWindowCoplanarDegrees.
+bool coplanar(const Vec3& n1, Vec3 n2, bool flip) {
+  constexpr double kPi = 3.14159265358979323846;
+  static const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
+  if (flip) n2 = -1.0 * n2;
+  if (!(dot(n1, n2) > 0)) return false;
+  const Vec3 c = cross(n1, n2);
+  return dot(c, c) <= sin2 * dot(n1, n1) * dot(n2, n2);
+}
+
+Vec3 face_normal(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, Index f) {
+  const Triangle& t = triangles[f];
+  return cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::vector<Index>& ring,
+                                         const std::vector<std::uint8_t>& vertex_kind,
+                                         const std::vector<bool>& skipped_face) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
+  const std::vector<Triangle>& tris = mesh.triangles;
+  const std::vector<Vec3>& pos = mesh.positions;
+  std::vector<std::uint8_t> corner;
+  for (Index f = 0; f < Index(tris.size()); ++f) {
+    if (skipped_face[f]) continue;
+    const Triangle& t = tris[f];
+    bool saddle[3];
+    for (int i = 0; i < 3; ++i) saddle[i] = vertex_kind[t[i]] == intrinsic::kSaddleVertex;
+    if (!saddle[0] && !saddle[1] && !saddle[2]) continue;   // no edge of f has a saddle end
+    const Vec3 n = face_normal(tris, pos, f);
+    const double n2 = dot(n, n);
+    for (Index i = 0; i < 3; ++i) {
+      const Index h = 3 * f + i, link = ring[h], g = link & kRingIndexMask;
+      // Each edge of two faces once (the pair's lower halfedge); boundaries and fans of more
+      // faces have no plane to share.
+      if (!(link & kRingPair) || g < h || skipped_face[face_of(g)]) continue;
+      const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
+      const bool sa = saddle[i], sb = saddle[i == 2 ? 0 : i + 1];
+      if (!sa && !sb) continue;
+      if (!corner.empty() && (!sa || corner[a]) && (!sb || corner[b])) continue;   // nothing new to mark
+      // Most edges fail at once: the far corner of the other face lies off f's plane by more
+      // than the angle allows even measured from a (the edge's line is no farther than a).
+      const Triangle& tg = tris[face_of(g)];
+      const Vec3 q = pos[tg[corner_of(g) == 0 ? 2 : corner_of(g) - 1]] - pos[a];
+      const double off = dot(n, q);
+      if (off * off > sin2 * n2 * dot(q, q)) continue;
+      // Faces walking the edge the same way disagree in orientation: one normal turned round.
+      if (!coplanar(n, face_normal(tris, pos, face_of(g)), tg[corner_of(g)] == a)) continue;
+      if (corner.empty()) corner.assign(mesh.num_vertices(), 0);
+      if (sa) corner[a] = 1;
+      if (sb) corner[b] = 1;
+    }
+  }
+  return corner;
+}
+
+std::vector<std::uint8_t> window_face_flags(const std::vector<Triangle>& triangles, const std::vector<Index>& ring,
+                                            const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
+                                            const std::vector<Vec3>& positions,
+                                            const std::vector<std::uint8_t>& window_corner,
+                                            const std::vector<bool>& skipped_face) {
+  constexpr std::uint8_t kSeen = 0x80;   // queued; cleared at the end
+  std::vector<std::uint8_t> flags(triangles.size(), 0);
+  std::vector<Index> queue;
+  for (Index v = 0; v < Index(window_corner.size()); ++v) {
+    if (!window_corner[v]) continue;
+    for (Index k = corner_begin[v]; k < corner_begin[v + 1]; ++k) {
+      const Index c = corners[k], f = face_of(c);
+      if (skipped_face[f]) continue;
+      flags[f] |= std::uint8_t(kWindowCorner0 << corner_of(c));
+      if (!(flags[f] & kSeen)) flags[f] |= kSeen, queue.push_back(f);
+    }
+  }
+  // The planar regions round them, one face at a time over the coplanar edges.
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const Index f = queue[next];
+    const Vec3 n = face_normal(triangles, positions, f);
+    for (Index i = 0; i < 3; ++i) {
+      const Index h = 3 * f + i, link = ring[h], g = link & kRingIndexMask, fg = face_of(g);
+      if (!(link & kRingPair) || (flags[f] & (kWindowEdge0 << i)) || skipped_face[fg]) continue;
+      const bool same_way = triangles[fg][corner_of(g)] == triangles[f][i];
+      if (!coplanar(n, face_normal(triangles, positions, fg), same_way)) continue;
+      flags[f] |= std::uint8_t(kWindowEdge0 << i);
+      flags[fg] |= std::uint8_t(kWindowEdge0 << corner_of(g));
+      if (!(flags[fg] & kSeen)) flags[fg] |= kSeen, queue.push_back(fg);
+    }
+  }
+  for (Index f : queue) flags[f] &= std::uint8_t(~kSeen);
+  return flags;
+}
+
+}  // namespace gsp::detail
