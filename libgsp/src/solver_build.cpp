@@ -148,6 +148,13 @@ void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn, intrinsic::Corne
   for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
     boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;
   vertex_kind = intrinsic::vertex_kinds(mesh(), angle_sums, boundary_halfedge, skipped_face, nonmanifold);
+  // Carried windows (3D lengths only: a caller's metric need not be flat where 3D is planar):
+  // the vertices that bound them; the faces' flags follow once the flips are done.
+  if (!custom_lengths)
+    window_corner = detail::window_corners(
+        mesh(), input.ring,
+        detail::window_candidates(mesh(), vertex_kind, angle_sums.angle, boundary_halfedge, skipped_face, nonmanifold),
+        skipped_face);
   angle_sums = {};
 }
 
@@ -280,18 +287,16 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
           timings.delaunay = lap();
         });
   }
-  // Carried windows (3D lengths only: a caller's metric need not be flat where 3D is planar):
-  // which vertices bound them, then what each face of the triangulations asks (after the flips).
-  // Timed with the vertex analysis (--stats' build_phases).
-  if (!custom_lengths) {
+  // Carried windows: what each face of the triangulations asks (after the flips), from the
+  // window corners the vertex analysis found; timed with it (--stats' build_phases).
+  if (!window_corner.empty()) {
     const auto start = Clock::now();
-    const std::vector<std::uint8_t> corner = detail::window_corners(mesh(), input.ring, vertex_kind, skipped_face);
-    window_corner_count = std::size_t(std::count(corner.begin(), corner.end(), std::uint8_t(1)));
-    if (window_corner_count > 0)
-      for (Triangulation* t : {&input, delaunay.get()})
-        if (t)
-          t->window_flags = detail::window_face_flags(t->triangles(), t->ring, t->corner_begin, t->corners,
-                                                      mesh().positions, corner, skipped_face);
+    window_corner_count = std::size_t(std::count(window_corner.begin(), window_corner.end(), std::uint8_t(1)));
+    for (Triangulation* t : {&input, delaunay.get()})
+      if (t)
+        t->window_flags = detail::window_face_flags(t->triangles(), t->ring, t->corner_begin, t->corners,
+                                                    mesh().positions, window_corner, skipped_face);
+    window_corner = {};
     timings.vertex_analysis += std::chrono::duration<double>(Clock::now() - start).count();
   }
   if (line_scale > 0) {

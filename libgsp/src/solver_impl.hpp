@@ -193,8 +193,9 @@ struct GeodesicSolver::Impl {
   std::vector<Index> coincident_begin{0}, coincident;
   std::vector<std::uint8_t> vertex_kind;   // per vertex: flat, saddle or neither (intrinsic_geometry.hpp)
   // Vertices that bound carried windows (window_corners.hpp); 0: the queries carry none. The
-  // per-vertex marks go once the triangulations' window_flags are made from them.
+  // per-vertex marks (window_corner) go once the triangulations' window_flags are made.
   std::size_t window_corner_count = 0;
+  std::vector<std::uint8_t> window_corner;
   double mean_edge = 1;
   bool custom_lengths = false;     // SolverOptions::edge_lengths given
   // How 3D bounds the lengths: 1 for 3D lengths, SolverOptions::edge_lengths_line_scale for

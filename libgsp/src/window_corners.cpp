@@ -29,8 +29,26 @@ Vec3 face_normal(const std::vector<Triangle>& triangles, const std::vector<Vec3>
 
 }  // namespace
 
+std::vector<std::uint8_t> window_candidates(const TriangleMesh& mesh, const std::vector<std::uint8_t>& vertex_kind,
+                                            const std::vector<double>& angle,
+                                            const std::vector<std::uint8_t>& boundary_halfedge,
+                                            const std::vector<bool>& skipped_face,
+                                            const std::vector<Index>& nonmanifold) {
+  constexpr double kPi = 3.14159265358979323846;
+  std::vector<std::uint8_t> candidate(vertex_kind.size(), 0);
+  for (std::size_t v = 0; v < vertex_kind.size(); ++v) candidate[v] = vertex_kind[v] == intrinsic::kSaddleVertex;
+  for (Index h = 0; h < Index(boundary_halfedge.size()); ++h) {
+    if (!boundary_halfedge[h] || skipped_face[face_of(h)]) continue;
+    const Triangle& t = mesh.triangles[face_of(h)];
+    for (Index v : {t[corner_of(h)], t[corner_of(next_halfedge(h))]})
+      if (angle[v] > kPi * (1 + intrinsic::kSaddleExcess)) candidate[v] = 1;
+  }
+  for (Index v : nonmanifold) candidate[v] = 0;
+  return candidate;
+}
+
 std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::vector<Index>& ring,
-                                         const std::vector<std::uint8_t>& vertex_kind,
+                                         const std::vector<std::uint8_t>& candidate,
                                          const std::vector<bool>& skipped_face) {
   constexpr double kPi = 3.14159265358979323846;
   const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
@@ -40,9 +58,9 @@ std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::ve
   for (Index f = 0; f < Index(tris.size()); ++f) {
     if (skipped_face[f]) continue;
     const Triangle& t = tris[f];
-    bool saddle[3];
-    for (int i = 0; i < 3; ++i) saddle[i] = vertex_kind[t[i]] == intrinsic::kSaddleVertex;
-    if (!saddle[0] && !saddle[1] && !saddle[2]) continue;   // no edge of f has a saddle end
+    bool cand[3];
+    for (int i = 0; i < 3; ++i) cand[i] = candidate[t[i]] != 0;
+    if (!cand[0] && !cand[1] && !cand[2]) continue;   // no edge of f has a candidate end
     const Vec3 n = face_normal(tris, pos, f);
     const double n2 = dot(n, n);
     for (Index i = 0; i < 3; ++i) {
@@ -51,7 +69,7 @@ std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::ve
       // faces have no plane to share.
       if (!(link & kRingPair) || g < h || skipped_face[face_of(g)]) continue;
       const Index a = t[i], b = t[i == 2 ? 0 : i + 1];
-      const bool sa = saddle[i], sb = saddle[i == 2 ? 0 : i + 1];
+      const bool sa = cand[i], sb = cand[i == 2 ? 0 : i + 1];
       if (!sa && !sb) continue;
       if (!corner.empty() && (!sa || corner[a]) && (!sb || corner[b])) continue;   // nothing new to mark
       // Most edges fail at once: the far corner of the other face lies off f's plane by more

@@ -8,14 +8,25 @@
 
 namespace gsp::detail {
 
-// Per vertex 1 where the vertex is a saddle (vertex_kind kSaddleVertex) with an edge whose two
-// faces lie in one plane (normals within kWindowCoplanarDegrees, the faces' orientations
-// reconciled along the edge): a corner of a planar region where the region turns round a hole
-// or a concave corner. Empty where no vertex is one (scans, and their subdivisions: a
-// midpoint split makes coplanar faces only round the new, flat vertices), so such meshes pay
-// nothing for the windows. `ring`: the radial links of the input faces (ring_links.hpp).
+// Per vertex 1 where a line can pass the vertex on a side no surface path takes, so that it
+// hides part of what lies beyond: saddle vertices (vertex_kind kSaddleVertex) and reflex
+// boundary vertices (a boundary vertex whose angle sum `angle` exceeds pi by more than
+// kSaddleExcess: a concave corner of a sheet's rim, the rim of a hole through an open sheet).
+// Vertices joining several fans (`nonmanifold`) have no angle sum to judge by: not candidates.
+std::vector<std::uint8_t> window_candidates(const TriangleMesh& mesh, const std::vector<std::uint8_t>& vertex_kind,
+                                            const std::vector<double>& angle,
+                                            const std::vector<std::uint8_t>& boundary_halfedge,
+                                            const std::vector<bool>& skipped_face,
+                                            const std::vector<Index>& nonmanifold);
+
+// Per vertex 1 where a candidate (window_candidates()) has an edge whose two faces lie in one
+// plane (normals within kWindowCoplanarDegrees, the faces' orientations reconciled along the
+// edge): a corner of a planar region where the region turns round a hole or a concave corner.
+// Empty where no vertex is one (scans, and their subdivisions: a midpoint split makes
+// coplanar faces only round the new, flat vertices), so such meshes pay nothing for the
+// windows. `ring`: the radial links of the input faces (ring_links.hpp).
 std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::vector<Index>& ring,
-                                         const std::vector<std::uint8_t>& vertex_kind,
+                                         const std::vector<std::uint8_t>& candidate,
                                          const std::vector<bool>& skipped_face);
 
 // Per face of a triangulation the propagation runs on (the input's or the intrinsic Delaunay
