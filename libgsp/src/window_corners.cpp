@@ -11,20 +11,30 @@ namespace gsp::detail {
 
 namespace {
 
-// Whether two faces' normals (unnormalised; `flip`: the faces disagree in orientation along
-// their edge) agree within kWindowCoplanarDegrees.
-bool coplanar(const Vec3& n1, Vec3 n2, bool flip) {
-  constexpr double kPi = 3.14159265358979323846;
-  static const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
-  if (flip) n2 = -1.0 * n2;
-  if (!(dot(n1, n2) > 0)) return false;
-  const Vec3 c = cross(n1, n2);
-  return dot(c, c) <= sin2 * dot(n1, n1) * dot(n2, n2);
-}
+constexpr double kPi = 3.14159265358979323846;
 
 Vec3 face_normal(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, Index f) {
   const Triangle& t = triangles[f];
   return cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+}
+
+// Whether face f (normal n, unnormalised) and the face of halfedge g across f's halfedge h
+// lie in one plane (normals within kWindowCoplanarDegrees, the faces' orientations reconciled
+// along the edge). Most pairs fail at once: g's far corner lies off f's plane by more than the
+// angle allows even measured from h's first end (the edge's line is no farther than that).
+bool coplanar_across(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, const Vec3& n,
+                     Index h, Index g) {
+  static const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
+  const Index a = triangles[face_of(h)][corner_of(h)];
+  const Triangle& tg = triangles[face_of(g)];
+  const Vec3 q = positions[tg[corner_of(g) == 0 ? 2 : corner_of(g) - 1]] - positions[a];
+  const double off = dot(n, q), n2 = dot(n, n);
+  if (off * off > sin2 * n2 * dot(q, q)) return false;
+  Vec3 m = face_normal(triangles, positions, face_of(g));
+  if (tg[corner_of(g)] == a) m = -1.0 * m;   // both walk the edge the same way: orientations disagree
+  if (!(dot(n, m) > 0)) return false;
+  const Vec3 c = cross(n, m);
+  return dot(c, c) <= sin2 * n2 * dot(m, m);
 }
 
 }  // namespace
@@ -34,7 +44,6 @@ std::vector<std::uint8_t> window_candidates(const TriangleMesh& mesh, const std:
                                             const std::vector<std::uint8_t>& boundary_halfedge,
                                             const std::vector<bool>& skipped_face,
                                             const std::vector<Index>& nonmanifold) {
-  constexpr double kPi = 3.14159265358979323846;
   std::vector<std::uint8_t> candidate(vertex_kind.size(), 0);
   for (std::size_t v = 0; v < vertex_kind.size(); ++v) candidate[v] = vertex_kind[v] == intrinsic::kSaddleVertex;
   for (Index h = 0; h < Index(boundary_halfedge.size()); ++h) {
@@ -50,8 +59,6 @@ std::vector<std::uint8_t> window_candidates(const TriangleMesh& mesh, const std:
 std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::vector<Index>& ring,
                                          const std::vector<std::uint8_t>& candidate,
                                          const std::vector<bool>& skipped_face) {
-  constexpr double kPi = 3.14159265358979323846;
-  const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
   const std::vector<Triangle>& tris = mesh.triangles;
   const std::vector<Vec3>& pos = mesh.positions;
   std::vector<std::uint8_t> corner;
@@ -62,7 +69,6 @@ std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::ve
     for (int i = 0; i < 3; ++i) cand[i] = candidate[t[i]] != 0;
     if (!cand[0] && !cand[1] && !cand[2]) continue;   // no edge of f has a candidate end
     const Vec3 n = face_normal(tris, pos, f);
-    const double n2 = dot(n, n);
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, link = ring[h], g = link & kRingIndexMask;
       // Each edge of two faces once (the pair's lower halfedge); boundaries and fans of more
@@ -72,14 +78,7 @@ std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::ve
       const bool sa = cand[i], sb = cand[i == 2 ? 0 : i + 1];
       if (!sa && !sb) continue;
       if (!corner.empty() && (!sa || corner[a]) && (!sb || corner[b])) continue;   // nothing new to mark
-      // Most edges fail at once: the far corner of the other face lies off f's plane by more
-      // than the angle allows even measured from a (the edge's line is no farther than a).
-      const Triangle& tg = tris[face_of(g)];
-      const Vec3 q = pos[tg[corner_of(g) == 0 ? 2 : corner_of(g) - 1]] - pos[a];
-      const double off = dot(n, q);
-      if (off * off > sin2 * n2 * dot(q, q)) continue;
-      // Faces walking the edge the same way disagree in orientation: one normal turned round.
-      if (!coplanar(n, face_normal(tris, pos, face_of(g)), tg[corner_of(g)] == a)) continue;
+      if (!coplanar_across(tris, pos, n, h, g)) continue;
       if (corner.empty()) corner.assign(mesh.num_vertices(), 0);
       if (sa) corner[a] = 1;
       if (sb) corner[b] = 1;
@@ -112,8 +111,7 @@ std::vector<std::uint8_t> window_face_flags(const std::vector<Triangle>& triangl
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, link = ring[h], g = link & kRingIndexMask, fg = face_of(g);
       if (!(link & kRingPair) || (flags[f] & (kWindowEdge0 << i)) || skipped_face[fg]) continue;
-      const bool same_way = triangles[fg][corner_of(g)] == triangles[f][i];
-      if (!coplanar(n, face_normal(triangles, positions, fg), same_way)) continue;
+      if (!coplanar_across(triangles, positions, n, h, g)) continue;
       flags[f] |= std::uint8_t(kWindowEdge0 << i);
       flags[fg] |= std::uint8_t(kWindowEdge0 << corner_of(g));
       if (!(flags[fg] & kSeen)) flags[fg] |= kSeen, queue.push_back(fg);

@@ -1,6 +1,7 @@
 #pragma once
 // Which vertices bound carried windows (window_bounds.hpp; docs/gsp-core.md, rule 10): the
-// saddle vertices on a planar region's rim, found at preparation. Internal header of libgsp.
+// saddle and reflex boundary vertices on a planar region's rim, and each face's flags, found at
+// preparation. Internal header of libgsp.
 #include <gsp/mesh.hpp>
 
 #include <cstdint>
