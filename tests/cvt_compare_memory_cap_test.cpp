@@ -6,10 +6,9 @@
 #include <gsp/available_memory.hpp>
 
 #include <gtest/gtest.h>
-
-#include <algorithm>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <memory>
 #include <new>
