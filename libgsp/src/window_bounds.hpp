@@ -76,10 +76,9 @@ inline constexpr double kWindowLooseLambda = 0.15;
 // Bends only into faces of aspect (longest edge squared over twice the area) below this: a
 // window bend taken for a long sliver near one end bends all of it.
 inline constexpr double kWindowMaxAspect = 10;
-// Bends only between faces whose planes agree within this angle (degrees): in a planar region
-// a bend at a hiding rim vertex is the true path; on curved surfaces GSP's straight values
-// below exact and bent ones above cancel, and the window would take the bent side.
-inline constexpr double kWindowCoplanarDegrees = 0.05;
+// Bends only between faces in one plane (intrinsic::coplanar_across, gsp/intrinsic/coplanar_faces.hpp):
+// in a planar region a bend at a hiding rim vertex is the true path; on curved surfaces GSP's
+// straight values below exact and bent ones above cancel, and the window would take the bent side.
 
 // Sides given in the sending face's edge frame (hx, hy: U on +y) unfolded into the receiving
 // face's edge frame the way unfold() moves the source: y flips; x is mirrored unless the faces

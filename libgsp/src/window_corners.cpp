@@ -3,6 +3,7 @@
 #include "ring_links.hpp"
 #include "window_bounds.hpp"
 
+#include <gsp/intrinsic/coplanar_faces.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <cmath>
@@ -13,29 +14,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Vec3 face_normal(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, Index f) {
-  const Triangle& t = triangles[f];
-  return cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
-}
-
-// Whether face f (normal n, unnormalised) and the face of halfedge g across f's halfedge h
-// lie in one plane (normals within kWindowCoplanarDegrees, the faces' orientations reconciled
-// along the edge). Most pairs fail at once: g's far corner lies off f's plane by more than the
-// angle allows even measured from h's first end (the edge's line is no farther than that).
-bool coplanar_across(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, const Vec3& n,
-                     Index h, Index g) {
-  static const double sin2 = std::pow(std::sin(kWindowCoplanarDegrees * kPi / 180), 2);
-  const Index a = triangles[face_of(h)][corner_of(h)];
-  const Triangle& tg = triangles[face_of(g)];
-  const Vec3 q = positions[tg[corner_of(g) == 0 ? 2 : corner_of(g) - 1]] - positions[a];
-  const double off = dot(n, q), n2 = dot(n, n);
-  if (off * off > sin2 * n2 * dot(q, q)) return false;
-  Vec3 m = face_normal(triangles, positions, face_of(g));
-  if (tg[corner_of(g)] == a) m = -1.0 * m;   // both walk the edge the same way: orientations disagree
-  if (!(dot(n, m) > 0)) return false;
-  const Vec3 c = cross(n, m);
-  return dot(c, c) <= sin2 * n2 * dot(m, m);
-}
+using intrinsic::coplanar_across;
+using intrinsic::face_normal;
 
 }  // namespace
 

@@ -21,7 +21,7 @@ std::vector<std::uint8_t> window_candidates(const TriangleMesh& mesh, const std:
                                             const std::vector<Index>& nonmanifold);
 
 // Per vertex 1 where a candidate (window_candidates()) has an edge whose two faces lie in one
-// plane (normals within kWindowCoplanarDegrees, the faces' orientations reconciled along the
+// plane (intrinsic::coplanar_across: normals within kCoplanarDegrees, orientations reconciled along the
 // edge): a corner of a planar region where the region turns round a hole or a concave corner.
 // Empty where no vertex is one (scans, and their subdivisions: a midpoint split makes
 // coplanar faces only round the new, flat vertices), so such meshes pay nothing for the
@@ -34,7 +34,7 @@ std::vector<std::uint8_t> window_corners(const TriangleMesh& mesh, const std::ve
 // one: `triangles`, `ring`, its vertex corners `corner_begin` / `corners`), what the update
 // step asks of carried windows: bit i (kWindowEdge0 << i), edge i (corner i -> i + 1) lies in
 // one plane with the face across it (two faces on the edge, normals of the corners' 3D
-// triangles within kWindowCoplanarDegrees); bit 4 + i (kWindowCorner0 << i), corner i bounds
+// triangles in one plane, intrinsic::coplanar_across); bit 4 + i (kWindowCorner0 << i), corner i bounds
 // windows (`window_corner`). Only the planar regions round the window corners are looked at
 // (the faces reached from them over coplanar edges): a window is carried over coplanar edges
 // only, so no other face can hold one, and a scan with a few coplanar faces costs a few
