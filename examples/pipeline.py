@@ -50,8 +50,12 @@ def main():
             f.write(f"# length {p.length:.6g}\n")
             np.savetxt(f, p.points)
     print(f"paths: {len(paths)}, lengths {min(p.length for p in paths):.4g} .. {max(p.length for p in paths):.4g}")
-    # A path is a curve on the surface: never shorter than the field's distance at its end.
-    assert all(p.length >= d[e] * (1 - 0.01) for p, e in zip(paths, ends))
+    # A path is a curve on the surface: never shorter than the straight line between its ends,
+    # and its length agrees with the field's distance at its end within GSP's error (paths
+    # are traced through near-exact windows; GSP's field is off by up to a few percent at
+    # single vertices: docs/benchmarks.md, max RE).
+    assert all(p.length >= np.linalg.norm(V2[e] - V2[start]) * (1 - 1e-9) for p, e in zip(paths, ends))
+    assert all(abs(p.length - d[e]) <= 0.05 * d[e] for p, e in zip(paths, ends))
 
 
 if __name__ == "__main__":

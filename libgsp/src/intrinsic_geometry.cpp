@@ -2,6 +2,7 @@
 #include "prefetch_corners.hpp"
 
 #include <gsp/intrinsic/edge_lengths.hpp>
+#include <gsp/intrinsic/saddle_creases.hpp>
 
 #include <gsp/errors.hpp>
 
@@ -244,9 +245,20 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectiv
                                        const std::vector<Index>& bridge_vertices,
                                        const std::vector<Index>& coincident_vertices,
                                        const std::vector<double>& length, bool angles_from_length) {
-  return vertex_kinds(mesh, boundary_halfedges(conn, skipped_face, length), skipped_face,
-                      nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices),
-                      angles_from_length ? &length : nullptr);
+  const std::vector<std::uint8_t> boundary = boundary_halfedges(conn, skipped_face, length);
+  const std::vector<Index> nonmanifold = nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices);
+  const CornerAngleSums sums = corner_angle_sums(mesh, skipped_face, angles_from_length ? &length : nullptr);
+  std::vector<std::uint8_t> kind = vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold);
+  // Rule 4's crease limit, as the core applies it (3D creases: none for intrinsic lengths).
+  if (!angles_from_length)
+    plain_on_saddle_creases(
+        mesh, sums, boundary, nonmanifold, skipped_face,
+        [&](Index h) {
+          const Index g = conn.radial_next[h];
+          return g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)] ? g : h;
+        },
+        kind);
+  return kind;
 }
 
 }  // namespace gsp::intrinsic

@@ -19,6 +19,9 @@ namespace gsp::intrinsic {
 //   Only inside a flat region: a flat vertex with a neighbour that is not flat (vertices
 //   joining several fans aside) is plain, since a line carried past it can pass that
 //   neighbour on a side no surface path takes (midpoint-split meshes: 1% short on average).
+//   Nor on a crease that ends at a saddle: plain_on_saddle_creases() (saddle_creases.hpp), a
+//   step of its own that needs the 3D creases (the core and vertex_kinds(mesh, conn, ...) below
+//   apply it).
 // - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
 //   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
 //   wrong side is shorter than any path on the surface, so the probe is moved towards the
@@ -79,10 +82,10 @@ std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connecti
                                         const std::vector<Index>& bridge_vertices,
                                         const std::vector<Index>& coincident_vertices);
 
-// The core's vertex kinds in one call: the two above, then vertex_kinds. The corner angles come
-// from the 3D positions, or from `length` with angles_from_length (caller-supplied intrinsic
-// lengths). The core reads the boundary off its radial links instead (the same next_crossed),
-// which it has made anyway.
+// The core's vertex kinds in one call: the two above, then vertex_kinds, then (3D angles only)
+// plain_on_saddle_creases. The corner angles come from the 3D positions, or from `length` with
+// angles_from_length (caller-supplied intrinsic lengths: no creases). The core reads the
+// boundary off its radial links instead (the same next_crossed), which it has made anyway.
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectivity& conn,
                                        const std::vector<bool>& skipped_face,
                                        const std::vector<Index>& bridge_vertices,

@@ -1,0 +1,36 @@
+#pragma once
+// The flat-corner rule's crease limit (internal layer shared by the core and the line sources'
+// kernel; not a stable API; docs/gsp-core.md, rule 4).
+//
+// A vertex whose angle sum is 2 pi is flat however its faces are bent, so a straight crease
+// line of such vertices (an edge of the original mesh after midpoint splits, a fold of a
+// developable part) unfolds flat along its length. Where such a crease ends at a saddle, lines
+// carried straight past the crease's flat vertices (rule 4) come out on the far side of the
+// crease and go on to pass the saddle at its end on a side no surface path takes: on the bunny
+// split twice at edge midpoints (557k vertices) GSP was 1.36% below exact on average. The
+// flat vertices of such a crease are plain. Found from the 3D creases, so for meshes with 3D
+// lengths only; flat vertices in the middle of a plane (no crease) and creases that end
+// elsewhere keep the rule (planar CAD faces, developable parts: their exactness).
+#include <gsp/intrinsic/vertex_kinds.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace gsp::intrinsic {
+
+// Makes plain (kPlainVertex) every kFlatVertex of `kind` on a crease that ends at a saddle.
+// A crease edge: an edge whose faces do not lie in one plane (kCoplanarDegrees,
+// gsp/intrinsic/coplanar_faces.hpp); a crease line: intrinsically flat vertices (interior,
+// angle sum 2 pi within kFlatAngleTolerance, not joining several fans) with exactly two crease
+// edges each, joined by those edges; it ends at the first vertex that is not one of them, a
+// saddle if that vertex's angle sum exceeds 2 pi by more than the same tolerance (any saddle:
+// on midpoint-split scans the smallest ones bend lines too). `partner(h)`: the other halfedge
+// of h's edge where the edge joins exactly two faces that take part, else h. The other
+// arguments as vertex_kinds() takes them. Costs nothing on a mesh without flat vertices.
+void plain_on_saddle_creases(const TriangleMesh& mesh, const CornerAngleSums& sums,
+                             const std::vector<std::uint8_t>& boundary_halfedge,
+                             const std::vector<Index>& nonmanifold_vertices, const std::vector<bool>& skipped_face,
+                             const std::function<Index(Index)>& partner, std::vector<std::uint8_t>& kind);
+
+}  // namespace gsp::intrinsic
