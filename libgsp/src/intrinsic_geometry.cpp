@@ -163,7 +163,8 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
-                                       const std::vector<Index>& nonmanifold_vertices) {
+                                       const std::vector<Index>& nonmanifold_vertices,
+                                       const std::function<Index(Index)>* crease_partner) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
   const std::vector<double>& angle = sums.angle;
@@ -217,6 +218,11 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
     // point clouds overlap at many of them, on planes too).
     if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) kind[v] = kPlainVertex;
   }
+  if (crease_partner) {
+    std::vector<std::uint8_t> interior(nv);   // the vertices with an angle sum of their own
+    for (std::size_t v = 0; v < nv; ++v) interior[v] = used[v] && !boundary[v] && !joins_fans[v];
+    plain_on_saddle_creases(mesh, angle, interior, skipped_face, *crease_partner, kind);
+  }
   return kind;
 }
 
@@ -248,17 +254,12 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectiv
   const std::vector<std::uint8_t> boundary = boundary_halfedges(conn, skipped_face, length);
   const std::vector<Index> nonmanifold = nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices);
   const CornerAngleSums sums = corner_angle_sums(mesh, skipped_face, angles_from_length ? &length : nullptr);
-  std::vector<std::uint8_t> kind = vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold);
-  // Rule 4's crease limit, as the core applies it (3D creases: none for intrinsic lengths).
-  if (!angles_from_length)
-    plain_on_saddle_creases(
-        mesh, sums, boundary, nonmanifold, skipped_face,
-        [&](Index h) {
-          const Index g = conn.radial_next[h];
-          return g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)] ? g : h;
-        },
-        kind);
-  return kind;
+  // The crease limit for 3D angles (intrinsic lengths have no creases), as the core applies it.
+  const std::function<Index(Index)> partner = [&](Index h) {
+    const Index g = conn.radial_next[h];
+    return g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)] ? g : h;
+  };
+  return vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold, angles_from_length ? nullptr : &partner);
 }
 
 }  // namespace gsp::intrinsic

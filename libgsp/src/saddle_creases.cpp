@@ -8,25 +8,20 @@
 
 namespace gsp::intrinsic {
 
-void plain_on_saddle_creases(const TriangleMesh& mesh, const CornerAngleSums& sums,
-                             const std::vector<std::uint8_t>& boundary_halfedge,
-                             const std::vector<Index>& nonmanifold_vertices, const std::vector<bool>& skipped_face,
+void plain_on_saddle_creases(const TriangleMesh& mesh, const std::vector<double>& angle,
+                             const std::vector<std::uint8_t>& interior, const std::vector<bool>& skipped_face,
                              const std::function<Index(Index)>& partner, std::vector<std::uint8_t>& kind) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
   bool any_flat = false;
   for (std::size_t v = 0; v < nv && !any_flat; ++v) any_flat = kind[v] == kFlatVertex;
   if (!any_flat) return;
-  // Interior vertices with an angle sum, and which of them are flat or saddles.
+  // Which interior vertices are flat or saddles.
   constexpr std::uint8_t kFlat = 1, kSaddle = 2;
-  std::vector<std::uint8_t> type(sums.used);
-  for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
-    if (boundary_halfedge[h] && !skipped_face[face_of(Index(h))])
-      type[from_vertex(mesh, Index(h))] = type[to_vertex(mesh, Index(h))] = 0;
-  for (Index v : nonmanifold_vertices) type[v] = 0;
+  std::vector<std::uint8_t> type(nv, 0);
   for (std::size_t v = 0; v < nv; ++v) {
-    if (!type[v]) continue;
-    const double excess = sums.angle[v] - 2 * kPi;
+    if (!interior[v]) continue;
+    const double excess = angle[v] - 2 * kPi;
     type[v] = std::abs(excess) <= 2 * kPi * kFlatAngleTolerance ? kFlat : excess > 0 ? kSaddle : 0;
   }
   const std::vector<Triangle>& tris = mesh.triangles;

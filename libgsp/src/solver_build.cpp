@@ -17,7 +17,6 @@
 #include <gsp/intrinsic/bridge_vertices.hpp>
 #include <gsp/intrinsic/coincident_vertices.hpp>
 #include <gsp/intrinsic/edge_lengths.hpp>
-#include <gsp/intrinsic/saddle_creases.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 #include <gsp/topology.hpp>
 
@@ -148,16 +147,13 @@ void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn, intrinsic::Corne
   std::vector<std::uint8_t> boundary_halfedge(input.ring.size());
   for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
     boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;
-  vertex_kind = intrinsic::vertex_kinds(mesh(), angle_sums, boundary_halfedge, skipped_face, nonmanifold);
-  // Rule 4's crease limit (3D creases: a caller's metric has none).
-  if (!custom_lengths)
-    intrinsic::plain_on_saddle_creases(
-        mesh(), angle_sums, boundary_halfedge, nonmanifold, skipped_face,
-        [&](Index h) {
-          const Index link = input.ring[h];
-          return (link & detail::kRingPair) ? (link & detail::kRingIndexMask) : h;
-        },
-        vertex_kind);
+  // With rule 4's crease limit (3D creases: a caller's metric has none).
+  const std::function<Index(Index)> crease_partner = [&](Index h) {
+    const Index link = input.ring[h];
+    return (link & detail::kRingPair) ? (link & detail::kRingIndexMask) : h;
+  };
+  vertex_kind = intrinsic::vertex_kinds(mesh(), angle_sums, boundary_halfedge, skipped_face, nonmanifold,
+                                        custom_lengths ? nullptr : &crease_partner);
   // Carried windows (3D lengths only: a caller's metric need not be flat where 3D is planar):
   // the vertices that bound them; the faces' flags follow once the flips are done.
   if (!custom_lengths)

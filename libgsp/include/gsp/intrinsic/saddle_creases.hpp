@@ -21,16 +21,16 @@ namespace gsp::intrinsic {
 
 // Makes plain (kPlainVertex) every kFlatVertex of `kind` on a crease that ends at a saddle.
 // A crease edge: an edge whose faces do not lie in one plane (kCoplanarDegrees,
-// gsp/intrinsic/coplanar_faces.hpp); a crease line: intrinsically flat vertices (interior,
-// angle sum 2 pi within kFlatAngleTolerance, not joining several fans) with exactly two crease
-// edges each, joined by those edges; it ends at the first vertex that is not one of them, a
-// saddle if that vertex's angle sum exceeds 2 pi by more than the same tolerance (any saddle:
-// on midpoint-split scans the smallest ones bend lines too). `partner(h)`: the other halfedge
-// of h's edge where the edge joins exactly two faces that take part, else h. The other
-// arguments as vertex_kinds() takes them. Costs nothing on a mesh without flat vertices.
-void plain_on_saddle_creases(const TriangleMesh& mesh, const CornerAngleSums& sums,
-                             const std::vector<std::uint8_t>& boundary_halfedge,
-                             const std::vector<Index>& nonmanifold_vertices, const std::vector<bool>& skipped_face,
+// gsp/intrinsic/coplanar_faces.hpp); a crease line: intrinsically flat vertices (angle sum 2 pi
+// within kFlatAngleTolerance) with exactly two crease edges each, joined by those edges; it
+// ends at the first vertex that is not one of them, a saddle if that vertex's angle sum exceeds
+// 2 pi by more than the same tolerance (any saddle: on midpoint-split scans the smallest ones
+// bend lines too). Only `interior` vertices (used, not on the boundary, not joining several
+// fans) are flat or saddles here. `partner(h)`: the other halfedge of h's edge where the edge
+// joins exactly two faces that take part, else h. vertex_kinds() runs it when given a partner;
+// it costs nothing on a mesh without flat vertices.
+void plain_on_saddle_creases(const TriangleMesh& mesh, const std::vector<double>& angle,
+                             const std::vector<std::uint8_t>& interior, const std::vector<bool>& skipped_face,
                              const std::function<Index(Index)>& partner, std::vector<std::uint8_t>& kind);
 
 }  // namespace gsp::intrinsic

@@ -6,6 +6,7 @@
 #include <gsp/types.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace gsp::intrinsic {
@@ -19,9 +20,8 @@ namespace gsp::intrinsic {
 //   Only inside a flat region: a flat vertex with a neighbour that is not flat (vertices
 //   joining several fans aside) is plain, since a line carried past it can pass that
 //   neighbour on a side no surface path takes (midpoint-split meshes: 1% short on average).
-//   Nor on a crease that ends at a saddle: plain_on_saddle_creases() (saddle_creases.hpp), a
-//   step of its own that needs the 3D creases (the core and vertex_kinds(mesh, conn, ...) below
-//   apply it).
+//   Nor on a crease that ends at a saddle: plain_on_saddle_creases() (saddle_creases.hpp),
+//   which needs the 3D creases; vertex_kinds() runs it when given a crease partner.
 // - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
 //   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
 //   wrong side is shorter than any path on the surface, so the probe is moved towards the
@@ -65,10 +65,14 @@ CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bo
 // give the sums of one pass to the bit (each vertex adds its corners in face order).
 void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                        const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end);
+// With `crease_partner` (3D positions only; see plain_on_saddle_creases() in
+// saddle_creases.hpp for what it returns) the flat vertices on creases that end at saddles are
+// plain too.
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
-                                       const std::vector<Index>& nonmanifold_vertices);
+                                       const std::vector<Index>& nonmanifold_vertices,
+                                       const std::function<Index(Index)>* crease_partner = nullptr);
 
 // What vertex_kinds above needs from the connectivity, as the core's propagation sees the
 // mesh. boundary_halfedges: per halfedge, whether the propagation crosses from it to no other
@@ -82,8 +86,8 @@ std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connecti
                                         const std::vector<Index>& bridge_vertices,
                                         const std::vector<Index>& coincident_vertices);
 
-// The core's vertex kinds in one call: the two above, then vertex_kinds, then (3D angles only)
-// plain_on_saddle_creases. The corner angles come from the 3D positions, or from `length` with
+// The core's vertex kinds in one call: the two above, then vertex_kinds (with the crease limit
+// for 3D angles). The corner angles come from the 3D positions, or from `length` with
 // angles_from_length (caller-supplied intrinsic lengths: no creases). The core reads the
 // boundary off its radial links instead (the same next_crossed), which it has made anyway.
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectivity& conn,
