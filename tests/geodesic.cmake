@@ -5,6 +5,7 @@ gsp_test(geodesic_local_test SOURCES geodesic_local_test.cpp DEPS gsp::core gsp:
 gsp_test(geodesic_heuristic_test SOURCES geodesic_heuristic_test.cpp DEPS gsp::core)
 gsp_test(geodesic_invariants_test SOURCES geodesic_invariants_test.cpp DEPS gsp::core gsp::io)
 gsp_test(geodesic_meshes_test SOURCES geodesic_meshes_test.cpp DEPS gsp::core gsp::io)
+gsp_test(geodesic_doubled_faces_test SOURCES geodesic_doubled_faces_test.cpp DEPS gsp::core gsp::lines)
 if(GSP_WITH_CGAL)
   gsp_test(geodesic_accuracy_test SOURCES geodesic_accuracy_test.cpp DEPS gsp::core gsp::io gsp::reference)
   gsp_test(geodesic_windows_test SOURCES geodesic_windows_test.cpp DEPS gsp::core gsp::io gsp::reference)

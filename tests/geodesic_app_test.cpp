@@ -69,6 +69,34 @@ TEST(GeodesicApp, StlIsWeldedAndWrittenInTheFilesOrder) {
   EXPECT_GT(reached, 100u);
 }
 
+// Doubled triangles (an export that wrote some faces twice): left out and reported, the field
+// that of the mesh without them. (Before: the copies' sources bounced between them and the
+// originals until memory ran out.)
+TEST(GeodesicApp, DoubledFacesAreLeftOutAndReported) {
+  ScratchDir dir("geodesic");
+  const TriangleMesh m = io::read_mesh(sample()).mesh;
+  TriangleMesh doubled = m;
+  std::size_t copies = 0;
+  for (std::size_t f = 0; f < m.num_faces(); f += 10, ++copies) {
+    Triangle t = m.triangles[f];
+    if (copies % 2) std::swap(t[1], t[2]);   // some copies reversed
+    doubled.triangles.push_back(t);
+  }
+  const std::string in = (dir / "doubled.off").string();
+  io::write_mesh(in, doubled);
+  const auto r = run(bin(kApp) + " " + quote(in) + " --source-vertex 12 -o " + quote((dir / "d.txt").string()) +
+                         " --stats -",
+                     dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(std::to_string(copies) + " faces repeat another face's three vertices"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(parse_json(r.out)["operations"]["duplicate_faces_skipped"].num, double(copies));
+  const std::vector<double> got = io::read_values_txt((dir / "d.txt").string());
+  const std::vector<double> lib = geodesic_distances(m, {Source::at_vertex(12)}).vertex_distance;
+  ASSERT_EQ(got.size(), lib.size());
+  for (std::size_t v = 0; v < lib.size(); ++v) ASSERT_NEAR(got[v], lib[v], 1e-6 * (1 + lib[v])) << v;
+}
+
 TEST(GeodesicApp, SourcePointSnapsToTheSurface) {
   ScratchDir dir("geodesic");
   const TriangleMesh m = io::read_mesh(sample()).mesh;

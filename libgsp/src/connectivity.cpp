@@ -99,6 +99,7 @@ Connectivity build_connectivity(const TriangleMesh& mesh) {
       while (end != last && (*end >> 32) == (*it >> 32)) ++end;
       const Index edge = static_cast<Index>(c.edge_halfedge.size());
       c.edge_halfedge.push_back(halfedge(*it));
+      if (end - it > 2) c.nonmanifold_edges.push_back(edge);
       for (std::uint64_t* k = it; k != end; ++k) {
         if (k + detail::kHalfedgesAhead < bucket_end) {   // the halfedges' slots ahead, written below
           const Index ahead = halfedge(*(k + detail::kHalfedgesAhead));

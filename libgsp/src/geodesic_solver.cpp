@@ -29,6 +29,7 @@ Index GeodesicSolver::face_memory_rank(Index face) const { return impl_->maps.fa
 const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 std::size_t GeodesicSolver::window_corners() const { return impl_->window_corner_count; }
+std::size_t GeodesicSolver::duplicate_faces() const { return impl_->duplicate_faces; }
 
 bool GeodesicSolver::needs_double() const {
   return (impl_->delaunay ? *impl_->delaunay : impl_->input).needs_double;

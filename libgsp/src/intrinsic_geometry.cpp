@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace gsp::detail {
 namespace {
@@ -80,6 +82,54 @@ std::vector<bool> skipped_faces(const TriangleMesh& mesh) {
   std::vector<bool> skipped(mesh.num_faces());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) skipped[f] = repeats_vertex(mesh.triangles[f]);
   return skipped;
+}
+
+std::size_t skip_duplicate_faces(const TriangleMesh& mesh, const Connectivity& conn, std::vector<bool>& skipped) {
+  std::size_t marked = 0;
+  std::vector<std::pair<Index, Index>> ring;   // (third vertex, face) of one edge's faces
+  for (Index e : conn.nonmanifold_edges) {
+    ring.clear();
+    const Index h0 = conn.edge_halfedge[e];
+    Index h = h0;
+    do {
+      const Index f = face_of(h);
+      // A copy names the edge's two ends and the same third vertex.
+      if (!skipped[f]) ring.push_back({mesh.triangles[f][corner_of(prev_halfedge(h))], f});
+      h = conn.radial_next[h];
+    } while (h != h0);
+    std::sort(ring.begin(), ring.end());
+    for (std::size_t i = 1; i < ring.size(); ++i)
+      if (ring[i].first == ring[i - 1].first && !skipped[ring[i].second]) skipped[ring[i].second] = true, ++marked;
+  }
+  return marked;
+}
+
+std::vector<bool> skipped_faces(const TriangleMesh& mesh, const Connectivity& conn) {
+  std::vector<bool> skipped = skipped_faces(mesh);
+  skip_duplicate_faces(mesh, conn, skipped);
+  return skipped;
+}
+
+Index kept_copy(const std::vector<Triangle>& triangles, const std::vector<Index>& corner_begin,
+                const std::vector<Index>& corners, const std::vector<bool>& skipped, Index f,
+                std::array<double, 3>& bary) {
+  const Triangle& t = triangles[f];
+  if (!skipped[f] || repeats_vertex(t)) return f;
+  for (Index k = corner_begin[t[0]]; k < corner_begin[t[0] + 1]; ++k) {
+    const Index g = face_of(corners[k]);
+    if (skipped[g]) continue;
+    const Triangle& u = triangles[g];
+    std::array<double, 3> b{};
+    int found = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (u[j] == t[i]) b[j] = bary[i], ++found;
+    if (found == 3) {
+      bary = b;
+      return g;
+    }
+  }
+  return f;
 }
 
 std::vector<double> halfedge_lengths(const TriangleMesh& mesh) {
@@ -235,14 +285,23 @@ std::vector<std::uint8_t> boundary_halfedges(const Connectivity& conn, const std
 
 std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connectivity& conn,
                                         const std::vector<Index>& bridge_vertices,
-                                        const std::vector<Index>& coincident_vertices) {
+                                        const std::vector<Index>& coincident_vertices,
+                                        const std::vector<bool>* skipped_face) {
   std::vector<Index> joins = bridge_vertices;
   joins.insert(joins.end(), coincident_vertices.begin(), coincident_vertices.end());
-  for (Index e = 0; e < conn.num_edges(); ++e)
-    if (conn.ring_size(conn.edge_halfedge[e]) > 2) {
-      joins.push_back(from_vertex(mesh, conn.edge_halfedge[e]));
-      joins.push_back(to_vertex(mesh, conn.edge_halfedge[e]));
+  for (Index e : conn.nonmanifold_edges) {
+    const Index h0 = conn.edge_halfedge[e];
+    std::size_t taking_part = 0;
+    Index h = h0;
+    do {
+      taking_part += !skipped_face || !(*skipped_face)[face_of(h)];
+      h = conn.radial_next[h];
+    } while (h != h0);
+    if (taking_part > 2) {
+      joins.push_back(from_vertex(mesh, h0));
+      joins.push_back(to_vertex(mesh, h0));
     }
+  }
   return joins;
 }
 
@@ -252,7 +311,8 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectiv
                                        const std::vector<Index>& coincident_vertices,
                                        const std::vector<double>& length, bool angles_from_length) {
   const std::vector<std::uint8_t> boundary = boundary_halfedges(conn, skipped_face, length);
-  const std::vector<Index> nonmanifold = nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices);
+  const std::vector<Index> nonmanifold =
+      nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices, &skipped_face);
   const CornerAngleSums sums = corner_angle_sums(mesh, skipped_face, angles_from_length ? &length : nullptr);
   // The crease limit for 3D angles (intrinsic lengths have no creases), as the core applies it.
   const std::function<Index(Index)> partner = [&](Index h) {

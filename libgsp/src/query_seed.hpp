@@ -5,7 +5,10 @@
 // sources' exact values. Then query_propagate.hpp, then the gather (query_gather.hpp).
 #include "solver_impl.hpp"
 
+#include <gsp/intrinsic/edge_lengths.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace gsp {
@@ -45,9 +48,11 @@ void GeodesicSolver::Impl::seed(const Triangulation& tri, const std::vector<Sour
     if (src.is_vertex()) {
       seed_vertex(maps.vertex_to_layout(src.element), src.offset, label);
     } else {
-      const auto& b = src.barycentric;
+      std::array<double, 3> b = src.barycentric;
+      // A doubled face's point lies in the copy the propagation kept.
+      Index f = intrinsic::kept_copy(mesh().triangles, input.corner_begin, input.corners, skipped_face,
+                                     maps.face_to_layout(src.element), b);
       const double sum = b[0] + b[1] + b[2];
-      Index f = maps.face_to_layout(src.element);
       if (skipped_face[f]) continue;   // a face repeating a vertex has no interior
       double w[3] = {b[0] / sum, b[1] / sum, b[2] / sum};
       if (&tri == delaunay.get()) {

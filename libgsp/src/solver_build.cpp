@@ -138,7 +138,8 @@ void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn, intrinsic::Corne
   // intrinsic::vertex_kinds(mesh, conn, ...) in its steps: the vertices joining several fans
   // from the connectivity first, so that the connectivity goes before the angle sums (the
   // Delaunay flips beside them are the preparation's peak of memory).
-  const std::vector<Index> nonmanifold = intrinsic::nonmanifold_vertices(mesh(), conn, bridge_vertices, coincident);
+  const std::vector<Index> nonmanifold =
+      intrinsic::nonmanifold_vertices(mesh(), conn, bridge_vertices, coincident, &skipped_face);
   // The connectivity's vertex corners are the input triangulation's; the rest goes now.
   input.corner_begin = std::move(conn.vertex_corner_begin);
   input.corners = std::move(conn.vertex_corners);
@@ -268,6 +269,15 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
           timings.connectivity = lap();
           connected.store(true, std::memory_order_relaxed);
         });
+  }
+  // Doubled faces (intrinsic::skip_duplicate_faces) take no part: found on the connectivity's
+  // non-manifold edges, so only now. Where there are any (rare), the mean edge and the angle
+  // sums begin again without them (the same sums on one thread and two).
+  if (!conn.nonmanifold_edges.empty() && (duplicate_faces = intrinsic::skip_duplicate_faces(mesh(), conn, skipped_face))) {
+    mean_edge = detail::mean_edge_length(input.length, skipped_face);
+    angles_done = 0;
+    angle_sums.angle.assign(mesh().num_vertices(), 0.0);
+    angle_sums.used.assign(mesh().num_vertices(), 0);
   }
   auto finish_angles = [&] {
     intrinsic::add_corner_angles(mesh(), skipped_face, angle_lengths, angle_sums, angles_done, mesh().num_faces());

@@ -181,7 +181,8 @@ struct GeodesicSolver::Impl {
   mutable std::unique_ptr<detail::FlipReplay> replay;
   const detail::FlipReplay& flip_replay() const;
   std::size_t flips = 0;
-  std::vector<bool> skipped_face;  // faces that repeat a vertex: not part of the propagation
+  std::vector<bool> skipped_face;  // faces that repeat a vertex or copy another: not part of the propagation
+  std::size_t duplicate_faces = 0;  // of them, copies (intrinsic::skip_duplicate_faces)
   // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
   // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
   std::vector<Index> bridge_vertices;

@@ -83,7 +83,7 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, const Connectivity& c
   m.positions = &mesh.positions;
   m.intrinsic = intrinsic_delaunay;
   m.input_triangles = &mesh.triangles;
-  m.skipped = intrinsic::skipped_faces(mesh);
+  m.skipped = intrinsic::skipped_faces(mesh, conn);   // doubled faces too
   const std::vector<bool>& skipped = m.skipped;
   std::vector<double> length = intrinsic::halfedge_lengths(mesh);
   intrinsic::snap_zero_lengths(length);
@@ -160,7 +160,7 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
       continue;
     }
     if (mesh.intrinsic) throw std::invalid_argument("window propagation on intrinsic faces: vertex sources only");
-    if (source.element >= nf || mesh.skipped[source.element])
+    if (source.element >= nf || (mesh.skipped[source.element] && repeats_vertex(mesh.triangles[source.element])))
       throw std::invalid_argument("source face " + std::to_string(source.element) + " out of range or degenerate");
     for (double b : source.barycentric)
       if (!(b >= 0) || !std::isfinite(b)) throw std::invalid_argument("source barycentric weights must be >= 0");
@@ -323,14 +323,17 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   for (std::size_t k_src = 0; k_src < sources.size(); ++k_src) {
     const Source& source = sources[k_src];
     if (source.kind != Source::Kind::vertex) {
-      // A point of a face sees all of it, as a corner does.
-      const auto& c = frame[source.element];
-      const auto& b = source.barycentric;
+      // A point of a face sees all of it, as a corner does (a doubled face's point: in the
+      // copy kept).
+      std::array<double, 3> b = source.barycentric;
+      const Index face = intrinsic::kept_copy(*mesh.input_triangles, mesh.input_corner_begin, mesh.input_corners,
+                                              mesh.skipped, source.element, b);
+      const auto& c = frame[face];
       const double sum = b[0] + b[1] + b[2];
       if (!(sum > 0)) throw std::invalid_argument("source barycentric weights sum to 0");
       Window w = corner_window((b[0] / sum) * c[0] + (b[1] / sum) * c[1] + (b[2] / sum) * c[2], 0.0);
       w.label = Index(k_src);
-      if (offer(source.element, w)) push(source.element);
+      if (offer(face, w)) push(face);
       continue;
     }
     for (Index c = mesh.corner_begin[source.element]; c < mesh.corner_begin[source.element + 1]; ++c) {

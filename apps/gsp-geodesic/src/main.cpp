@@ -180,6 +180,10 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();
     ctx.operations()["window_corners"] = solver.window_corners();
+    ctx.operations()["duplicate_faces_skipped"] = solver.duplicate_faces();
+    if (solver.duplicate_faces())
+      ctx.note(std::to_string(solver.duplicate_faces()) +
+               " faces repeat another face's three vertices and were left out (each face counts once)");
     ctx.stats()["memory"]["state_bytes_per_vertex"] =
         solver.num_vertices() ? double(solver.state_bytes(precision)) / double(solver.num_vertices()) : 0.0;
     if (o.separate || o.matrix) {

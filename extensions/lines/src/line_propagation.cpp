@@ -89,7 +89,7 @@ class Propagation {
     const std::size_t nf = mesh.num_faces();
     frames_.resize(nf);
     faces_.resize(nf);
-    const std::vector<bool> skipped_face = intrinsic::skipped_faces(mesh);
+    const std::vector<bool> skipped_face = intrinsic::skipped_faces(mesh, conn_);   // doubled faces too
     skipped_.assign(skipped_face.begin(), skipped_face.end());   // bytes: read per candidate
     for (Index f = 0; f < Index(nf); ++f)
       if (!skipped_[f]) frames_[f] = intrinsic::face_frame(mesh, f);

@@ -24,6 +24,9 @@ struct Connectivity {
   std::vector<Index> halfedge_edge;
   // Per undirected edge: one of its halfedges.
   std::vector<Index> edge_halfedge;
+  // The edges with more than two halfedges (non-manifold), in increasing order: what the
+  // duplicate-face and non-manifold-vertex passes read instead of every edge's ring.
+  std::vector<Index> nonmanifold_edges;
   // Vertex -> incident corners (3*f + i with triangles[f][i] == v), CSR: the corners of v are
   // vertex_corners[vertex_corner_begin[v] .. vertex_corner_begin[v+1]), in increasing order.
   std::vector<Index> vertex_corner_begin;

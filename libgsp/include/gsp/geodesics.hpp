@@ -287,6 +287,9 @@ class GeodesicSolver {
   // Vertices that bound carried windows (saddles on a planar region's rim; docs/gsp-core.md,
   // rule 10); 0: the queries carry none.
   std::size_t window_corners() const;
+  // Faces left out as copies of another face's three vertices (an STL's doubled triangles:
+  // intrinsic::skip_duplicate_faces); their vertices get the values of the face kept.
+  std::size_t duplicate_faces() const;
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
   // True where a face of the triangulation vertex-source queries run on is too thin for
   // single-precision lengths (Precision::automatic then runs in double).

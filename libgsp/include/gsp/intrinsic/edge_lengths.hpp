@@ -6,12 +6,31 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/mesh.hpp>
 
+#include <array>
 #include <vector>
 
 namespace gsp::intrinsic {
 
 // Per face, whether it takes no part: it names a vertex twice (gsp::repeats_vertex).
 std::vector<bool> skipped_faces(const TriangleMesh& mesh);
+
+// Copies of a face (the same three vertices, in any order or orientation: an STL with doubled
+// triangles) take no part either: the surface holds each face once. Glued to all three edges
+// of its original, a copy unfolds as the original mirrored across each edge, and sources
+// bounced between the two (a 9,874-vertex CAD part with 5% of its faces doubled: 22 GB, then
+// out of memory; docs/gsp-core.md, "Doubled faces"). Marks every copy but the lowest-indexed
+// face of its vertex set in `skipped` (faces skipped already are not counted as originals);
+// reads only conn.nonmanifold_edges, where every copy's edges are. Returns how many it marked.
+std::size_t skip_duplicate_faces(const TriangleMesh& mesh, const Connectivity& conn, std::vector<bool>& skipped);
+// skipped_faces() with the copies too.
+std::vector<bool> skipped_faces(const TriangleMesh& mesh, const Connectivity& conn);
+
+// A point of face f (barycentric `bary`, in f's corner order) where f is a copy skipped by
+// skip_duplicate_faces(): the same point in the face kept for its vertex set, whose index is
+// returned and whose corner order `bary` then follows. f itself where it is not such a copy.
+// corner_begin / corners: the vertex -> corner table (Connectivity::vertex_corner_begin, ...).
+Index kept_copy(const std::vector<Triangle>& triangles, const std::vector<Index>& corner_begin, const std::vector<Index>& corners,
+                const std::vector<bool>& skipped, Index f, std::array<double, 3>& bary);
 
 // Per halfedge 3 f + i, the 3D length of its edge (corner i to corner i+1 of face f).
 std::vector<double> halfedge_lengths(const TriangleMesh& mesh);

@@ -82,9 +82,12 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
 // and the ends of edges with more than two faces.
 std::vector<std::uint8_t> boundary_halfedges(const Connectivity& conn, const std::vector<bool>& skipped_face,
                                              const std::vector<double>& length);
+// With skipped_face, an edge counts as non-manifold where more than two of its faces take part
+// (a doubled face's edges do not: skip_duplicate_faces() in edge_lengths.hpp).
 std::vector<Index> nonmanifold_vertices(const TriangleMesh& mesh, const Connectivity& conn,
                                         const std::vector<Index>& bridge_vertices,
-                                        const std::vector<Index>& coincident_vertices);
+                                        const std::vector<Index>& coincident_vertices,
+                                        const std::vector<bool>* skipped_face = nullptr);
 
 // The core's vertex kinds in one call: the two above, then vertex_kinds (with the crease limit
 // for 3D angles). The corner angles come from the 3D positions, or from `length` with
