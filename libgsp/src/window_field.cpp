@@ -57,7 +57,8 @@ VirtualSource WindowField::source_at(Index face, Vec3 x) const {
   if (!reached(face)) return out;
   require_input_faces(*data_->mesh);
   const Plane pl = plane_of(*data_->mesh, face);
-  const V2 p = pl.to2d(x);
+  const double unit = data_->mesh->unit;   // the windows' scale (window_geodesics_impl.hpp)
+  const V2 p = unit * pl.to2d(x);
   double best = std::numeric_limits<double>::infinity();
   for (unsigned i = 0; i < data_->count[face]; ++i) {
     const Window& w = data_->win[data_->block[face] * data_->k + i];
@@ -65,7 +66,7 @@ VirtualSource WindowField::source_at(Index face, Vec3 x) const {
     double rest = 0;
     if (!origin_of(w, p, &from, &rest)) continue;
     const double v = norm(p - from) + rest;
-    if (v < best) best = v, out.position = pl.to3d(from), out.sigma = rest, out.source = w.label;
+    if (v < best) best = v, out.position = pl.to3d((1 / unit) * from), out.sigma = rest / unit, out.source = w.label;
   }
   return out;
 }
@@ -74,10 +75,12 @@ double WindowField::distance_at(Index face, const std::array<double, 3>& b) cons
   if (!reached(face)) return std::numeric_limits<double>::infinity();
   require_input_faces(*data_->mesh);
   const auto& c = data_->mesh->frame[face];
-  const V2 p = b[0] * c[0] + b[1] * c[1] + b[2] * c[2];
+  std::array<double, 3> w = b;
+  data_->mesh->to_propagation_corners(face, w);
+  const V2 p = w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
   double best = std::numeric_limits<double>::infinity();
   for (unsigned i = 0; i < data_->count[face]; ++i) best = std::min(best, value_at(data_->win[data_->block[face] * data_->k + i], p));
-  return best;
+  return best / data_->mesh->unit;
 }
 
 }  // namespace gsp

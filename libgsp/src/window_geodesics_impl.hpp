@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace gsp {
@@ -17,6 +18,12 @@ struct WindowGeodesics::Impl {
   const std::vector<Vec3>* positions = nullptr;
   bool intrinsic = false;   // the faces are the intrinsic Delaunay flip, not the input's
   double mean_edge = 1;
+  // The windows' geometry is held times `unit`, a power of two that brings the mean edge into
+  // [1/2, 1): exact (a power of two rounds nothing), and the windows' tolerances, written for
+  // models near unit size (a source within 1e-9 (1 + sigma) of another is the same one), then
+  // mean the same at every scale. Distances out are divided by it, points in and out scaled.
+  // (The CGAL pig scaled by 1e-7 gave a path 2.2% longer than its field.)
+  double unit = 1;
   // The input's edges for the final relaxation (vertex_relaxation.hpp): its triangles (the
   // caller keeps the mesh), their halfedge lengths, skipped faces and vertex -> corner lists.
   const std::vector<Triangle>* input_triangles = nullptr;
@@ -33,6 +40,13 @@ struct WindowGeodesics::Impl {
   // windows cannot cross an edge and a value at the vertex goes on as a corner window instead.
   std::vector<Index> corner_fan;
   std::vector<bool> joint;
+  // Input faces only: per face, whether the propagation winds it the other way (corners 1 and
+  // 2 swapped, so that every patch is wound alike); empty where none is.
+  std::vector<bool> rewound;
+  // Barycentric weights in the input face's corner order -> in the propagation's.
+  void to_propagation_corners(Index f, std::array<double, 3>& b) const {
+    if (!rewound.empty() && rewound[f]) std::swap(b[1], b[2]);
+  }
 };
 
 struct WindowField::Data {
