@@ -41,6 +41,8 @@ struct Walker {
   Bary bary{1, 0, 0};
   Vec3 position;
   Index entry = kInvalidIndex;
+  // The face before and the edge it crossed to come here (kept where `entry` is reset).
+  Index came_from = kInvalidIndex, came_over = kInvalidIndex;
   Vec3 target;
   double sigma = kInf;
   Index label = kInvalidIndex;

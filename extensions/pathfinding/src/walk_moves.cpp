@@ -88,9 +88,16 @@ bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const 
   const Vec3 q = from.position;
   double best = kInf;
   Index pick = kInvalidIndex;
+  // Back over the edge it came by, where more than two faces meet: not into the face it came
+  // from. On a house STL's fin two faces of such an edge each held a source across it, and the
+  // walk went back and forth between them until its step limit; the path then fell back to
+  // the edges (paths from one vertex: 5.1% over the field on average, up to 19.6%).
+  const bool shared = from.came_over != kInvalidIndex && conn_.halfedge_edge[h] == from.came_over &&
+                      conn_.radial_next[conn_.radial_next[h]] != h;
+  const Index came_from = shared ? from.came_from : kInvalidIndex;
   for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
     const Index f = face_of(g);
-    if (f == from.face || !usable(f)) continue;
+    if (f == from.face || f == came_from || !usable(f)) continue;
     const double d = own_value(f, q);
     if (pick == kInvalidIndex || d < best) best = d, pick = g;
   }
@@ -103,6 +110,7 @@ bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const 
   to.bary[corner_of(pick)] = same ? 1 - s : s;
   to.bary[corner_of(next_halfedge(pick))] = same ? s : 1 - s;
   to.entry = pick;
+  to.came_from = from.face, to.came_over = conn_.halfedge_edge[pick];
   // Unfold: edge frame (x along a -> b, y towards each face's third corner); the target lies on
   // the far side of the edge seen from `from`, i.e. on the neighbour's side.
   const Vec3 pa = mesh_.positions[a], pb = mesh_.positions[b];
