@@ -101,31 +101,23 @@ WindowGeodesics::WindowGeodesics(const TriangleMesh& mesh, const Connectivity& c
   for (Index h = 0; h < m.ring.size(); ++h) m.ring[h] = intrinsic::next_crossed(conn, skipped, length, h);
   m.input_corner_begin = conn.vertex_corner_begin;
   m.input_corners = conn.vertex_corners;
-  m.triangles = mesh.triangles;
-  if (intrinsic_delaunay) {
-    // The same flips as GSP's solver (intrinsic_delaunay.hpp): slivers become well-shaped
-    // triangles of the same surface.
+  {
     detail::IntrinsicTriangulation t;
-    t.triangles = std::move(m.triangles);
+    t.triangles = mesh.triangles;
     t.length = std::move(length);
     t.skipped = skipped;
     t.positions = &mesh.positions;
     t.ring = std::move(m.ring);
-    detail::make_intrinsic_delaunay(t, 20 * t.length.size());
-    m.triangles = std::move(t.triangles), length = std::move(t.length), m.ring = std::move(t.ring);
-  } else {
-    // The input's faces wound alike per patch too, as the flips' first step winds them: the
-    // windows' near-ties are decided by each face's winding, so a soup with some faces
-    // reversed had a field of its own (a house STL with 30% reversed: 2.9% apart at a vertex,
-    // paths 6.6% over the field on average against 5.1% as read). A face wound the other way
-    // keeps corner 0 and swaps 1 and 2 (`rewound`).
-    detail::IntrinsicTriangulation t;
-    t.triangles = std::move(m.triangles);
-    t.length = std::move(length);
-    t.skipped = skipped;
-    t.positions = &mesh.positions;
-    t.ring = std::move(m.ring);
-    if (detail::orient_consistently(t) > 0) {
+    if (intrinsic_delaunay) {
+      // The same flips as GSP's solver (intrinsic_delaunay.hpp): slivers become well-shaped
+      // triangles of the same surface.
+      detail::make_intrinsic_delaunay(t, 20 * t.length.size());
+    } else if (detail::orient_consistently(t) > 0) {
+      // The input's faces wound alike per patch too, as the flips' first step winds them: the
+      // windows' near-ties are decided by each face's winding, so a soup with some faces
+      // reversed had a field of its own (a house STL with 30% reversed: 2.9% apart at a
+      // vertex, paths 6.6% over the field on average against 5.1% as read). A face wound the
+      // other way keeps corner 0 and swaps 1 and 2 (`rewound`).
       m.rewound.resize(t.triangles.size());
       for (std::size_t f = 0; f < t.triangles.size(); ++f) m.rewound[f] = t.triangles[f][1] != mesh.triangles[f][1];
     }
