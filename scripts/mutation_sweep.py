@@ -4,8 +4,11 @@ shuffled, 30% of the faces reversed, 5% of them written twice, scaled by 1e-7 an
 1e6, 2% of the faces removed, every face with vertices of its own (unwelded). Per mutation it
 checks what holds on any surface: no exception other than gsp's typed ones, no NaN, no distance
 more than 1% below the straight line, none more than 1% above the shortest path along the edges
-(meshes under 60k vertices), nothing left unreached that the edges reach. Prints the failures
-and a line per mesh (docs/gsp-core.md, "Doubled faces", is what it found first).
+(meshes under 60k vertices), nothing left unreached that the edges reach. With --paths, also
+the default geodesic path from the source to the farthest vertex: between the straight line
+and the edge path, and within --path-slack of the field (docs/pathfinding.md, "Scale and
+winding", lists what that still finds). Prints the failures and a line per mesh
+(docs/gsp-core.md, "Doubled faces", is what it found first).
 
     /usr/bin/python3 scripts/mutation_sweep.py ../shared/data/corpus ../shared/data/meshes
 """
@@ -44,11 +47,12 @@ def edge_paths(V, F, s):
     return d
 
 
-def check(V, F, s, edge_limit):
+def check(V, F, s, edge_limit, path_slack=None):
     """'' when every check holds, else what failed."""
     try:
-        d = gsp.GeodesicSolver(V, F).distance(int(s))
-    except (gsp.Error, ValueError) as e:
+        solver = gsp.GeodesicSolver(V, F)
+        d = solver.distance(int(s))
+    except (gsp.Error, ValueError):
         return ''   # a typed refusal is a valid answer
     except Exception as e:  # noqa: BLE001 - anything else is the finding
         return f'untyped {type(e).__name__}: {e}'
@@ -56,12 +60,24 @@ def check(V, F, s, edge_limit):
         return f'NaN at {int(np.isnan(d).sum())} vertices'
     line = np.linalg.norm(V - V[s], axis=1)
     fin = np.isfinite(d)
-    below = float(((line[fin] - d[fin]) / np.maximum(line[fin], 1e-300)).max()) if fin.any() else 0.0
+    ep = edge_paths(V, F, s) if len(V) <= edge_limit else None
     problems = []
+    if path_slack is not None and fin.sum() > 1:
+        b = int(np.flatnonzero(fin)[np.argmax(d[fin])])
+        try:
+            p = solver.path(int(s), b)
+            if p.length < 0.99 * line[b]:
+                problems.append(f'path to {b} {p.length:.6g} below the straight line {line[b]:.6g}')
+            if ep is not None and p.length > 1.01 * ep[b]:
+                problems.append(f'path to {b} {p.length:.6g} above the edge path {ep[b]:.6g}')
+            if p.length > (1 + path_slack) * d[b]:
+                problems.append(f'path to {b} {100 * (p.length / d[b] - 1):.3g}% over the field')
+        except (gsp.Error, ValueError) as e:
+            problems.append(f'path to {b}: {type(e).__name__}: {e}')
+    below = float(((line[fin] - d[fin]) / np.maximum(line[fin], 1e-300)).max()) if fin.any() else 0.0
     if below > 0.01:
         problems.append(f'{100 * below:.3g}% below the straight line')
-    if len(V) <= edge_limit:
-        ep = edge_paths(V, F, s)
+    if ep is not None:
         m = np.isfinite(ep) & (ep > 0) & fin
         above = float(((d[m] - ep[m]) / ep[m]).max()) if m.any() else 0.0
         if above > 0.01:
@@ -98,6 +114,8 @@ def main():
     ap.add_argument('--max-vertices', type=int, default=100000)
     ap.add_argument('--edge-check-vertices', type=int, default=60000, help='edge-path check up to this size')
     ap.add_argument('--seed', type=int, default=7)
+    ap.add_argument('--paths', action='store_true', help='also check the path to the farthest vertex')
+    ap.add_argument('--path-slack', type=float, default=0.02, help='allowed path excess over the field (0.02: 2%%)')
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
     files = sorted(f for d in a.folders for f in glob.glob(os.path.join(d, '*'))
@@ -114,7 +132,7 @@ def main():
         s = int(F[0, 0])
         bad = 0
         for name, V2, F2, s2 in mutations(V, F, s, rng):
-            why = check(V2, F2, s2, a.edge_check_vertices)
+            why = check(V2, F2, s2, a.edge_check_vertices, a.path_slack if a.paths else None)
             if why:
                 print(f'FAIL {os.path.basename(f)}, {name}: {why}', flush=True)
                 bad += 1
