@@ -8,11 +8,7 @@
 #include "source_edges.hpp"
 #include "virtual_source.hpp"
 
-#include <gsp/intrinsic/edge_lengths.hpp>
-
 #include <algorithm>
-#include <array>
-#include <utility>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -165,15 +161,8 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
     }
   }
   // A doubled face's copy left out reads as the face kept (the same triangle in 3D).
-  std::vector<std::pair<Index, Index>> copies;   // (copy, kept), input order
-  for (std::size_t fi = 0; duplicate_faces && fi < nf; ++fi) {
-    if (!skipped_face[fi]) continue;
-    std::array<double, 3> b{1, 0, 0};
-    const Index g = intrinsic::kept_copy(mesh().triangles, input.corner_begin, input.corners, skipped_face, Index(fi), b);
-    if (g != Index(fi)) copies.push_back({maps.face_to_input(Index(fi)), maps.face_to_input(g)});
-  }
   if (options.want_face_distances)
-    for (const auto& [copy, kept] : copies) {
+    for (const auto& [copy, kept] : face_copies) {
       result.face_distance[copy] = result.face_distance[kept];
       result.face_source[copy] = result.face_source[kept];
     }
@@ -187,7 +176,7 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
       vs.sigma = double(st.sigma) * mean_edge;
       vs.source = st.source();
     }
-    for (const auto& [copy, kept] : copies) result.face_sources[copy] = result.face_sources[kept];
+    for (const auto& [copy, kept] : face_copies) result.face_sources[copy] = result.face_sources[kept];
   }
 }
 

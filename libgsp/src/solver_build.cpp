@@ -21,6 +21,7 @@
 #include <gsp/topology.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -314,6 +315,12 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
                                                     mesh().positions, window_corner, skipped_face);
     window_corner = {};
     timings.vertex_analysis += std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  for (Index f = 0; duplicate_faces && f < Index(mesh().num_faces()); ++f) {
+    if (!skipped_face[f]) continue;
+    std::array<double, 3> b{1, 0, 0};
+    const Index g = intrinsic::kept_copy(mesh().triangles, input.corner_begin, input.corners, skipped_face, f, b);
+    if (g != f) face_copies.push_back({maps.face_to_input(f), maps.face_to_input(g)});
   }
   if (line_scale > 0) {
     if (line_scale != 1) {

@@ -23,6 +23,7 @@
 #include <memory>
 #include <mutex>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace gsp {
@@ -183,6 +184,9 @@ struct GeodesicSolver::Impl {
   std::size_t flips = 0;
   std::vector<bool> skipped_face;  // faces that repeat a vertex or copy another: not part of the propagation
   std::size_t duplicate_faces = 0;  // of them, copies (intrinsic::skip_duplicate_faces)
+  // Each copy and the face kept for it, input face indices: the gather gives a copy its
+  // original's values (found once here, not per query).
+  std::vector<std::pair<Index, Index>> face_copies;
   // Vertices whose incident faces form several edge-connected fans (bow-ties, welded soups):
   // a wavefront reaching such a vertex continues into its other fans from the vertex itself.
   std::vector<Index> bridge_vertices;
