@@ -111,6 +111,25 @@ TEST(CoreSurfacePoint, ClosestPointWeightsNearAnEdgeStayBarycentric) {
   EXPECT_EQ(refused, 0);
 }
 
+// A CAD needle (aspect ratio about 1e7, as in a 3D-printing STL): points on the face a little
+// off its plane project onto the face itself. The textbook region tests took the weights from
+// differences of products of dot products and lost (aspect)^2 of the digits: weights off by
+// 10% of the 40-unit edge, and a path lying on such a face read as off the surface.
+TEST(CoreSurfacePoint, ClosestPointOnANeedleIsOnTheFace) {
+  const Vec3 a{0, 0, 0}, b{40, 0, 0}, c{20, 4e-6, 0};
+  const Vec3 n{0, 0, 1};
+  double worst = 0;
+  for (int i = 1; i < 100; ++i) {
+    const double wb = 0.01 * i, wc = 0.3 * std::fmod(0.37 * i, 1.0) * (1 - wb) + 0.01;
+    const Vec3 on = (1 - wb - wc) * a + wb * b + wc * c;
+    const Vec3 q = on + (1e-3 * ((i % 3) - 1)) * n;
+    const std::array<double, 3> w = closest_point_on_triangle(q, a, b, c);
+    ASSERT_TRUE(are_barycentric(w)) << i;
+    worst = std::max(worst, distance(w[0] * a + w[1] * b + w[2] * c, on));
+  }
+  EXPECT_LT(worst, 1e-9 * 40);
+}
+
 // A triangle with two corners at one position (exporters leave them at a sphere's poles):
 // the closest point is on its one segment, never NaN, for points all around it. A NaN here
 // once stopped gsp-cvt's closest-point searches early: 184 of a capsule's faces could not

@@ -6,42 +6,48 @@
 
 namespace gsp {
 
+namespace {
+
+// The closest point of segment a -> b to p as its parameter (0 at a, 1 at b; 0 for a segment
+// of zero length).
+double segment_parameter(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 d = b - a;
+  const double dd = dot(d, d);
+  return dd > 0 ? std::clamp(dot(p - a, d) / dd, 0.0, 1.0) : 0.0;
+}
+
+}  // namespace
+
 std::array<double, 3> closest_point_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  // Voronoi regions of the triangle's features, tested from the vertices inwards; each test
-  // uses dot products only, so degenerate (zero-area) triangles fall into an edge or vertex.
-  // An edge of zero length (two corners at one position, as exporters leave at a sphere's
-  // poles) has no region of its own (d1 - d3 is |ab|^2, and so on): the other two edges, which
-  // then lie on one segment, answer, where its test alone would divide 0 by 0.
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0 && d1 - d3 > 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
+  // p projected onto the triangle's plane, then each weight from the signed area of the
+  // sub-triangle opposite its corner (a cross product of two vectors from the projection, each
+  // at most a few edges long). Why not the textbook Voronoi-region tests (Ericson 5.1.5): they
+  // take the areas as differences of products of dot products, terms of size |edge|^4 for an
+  // answer of size area^2, which loses (longest edge / height)^2 of the 16 digits: on a CAD
+  // needle of aspect 1e7 the weights came out wrong by 13% of a 40-unit edge, and a path lying
+  // on such a face read as off the surface (docs/pathfinding.md, "Needles").
+  const Vec3 n = cross(b - a, c - a);
+  const double nn = dot(n, n);
+  if (nn > 0) {
+    const Vec3 q = p - (dot(p - a, n) / nn) * n;
+    const double u = dot(cross(b - q, c - q), n), v = dot(cross(c - q, a - q), n), w = dot(cross(a - q, b - q), n);
+    const double sum = u + v + w;
+    if (u >= 0 && v >= 0 && w >= 0 && sum > 0) return {u / sum, v / sum, w / sum};
   }
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0 && d2 - d6 > 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
+  // Outside, on the boundary within rounding, or no area (two corners at one position, as
+  // exporters leave at a sphere's poles, or three in a row): the nearest point of the three
+  // edges. A zero-length edge answers with its one point and the other two edges, which then
+  // lie on one segment, with the rest.
+  const double s_ab = segment_parameter(p, a, b), s_bc = segment_parameter(p, b, c), s_ca = segment_parameter(p, c, a);
+  const std::array<std::array<double, 3>, 3> w = {{{1 - s_ab, s_ab, 0}, {0, 1 - s_bc, s_bc}, {s_ca, 0, 1 - s_ca}}};
+  std::size_t best = 0;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vec3 x = w[k][0] * a + w[k][1] * b + w[k][2] * c;
+    const double d2 = dot(p - x, p - x);
+    if (d2 < best_d2) best = k, best_d2 = d2;
   }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0 && (d4 - d3) + (d5 - d6) > 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  // Inside: each weight from its own area term (1 - v - w rounds below 0 for points a hair
-  // from edge bc: 2.7% of such points in a test, and the core refuses negative weights).
-  const double u = std::max(0.0, va), v = std::max(0.0, vb), w = std::max(0.0, vc);
-  const double sum = u + v + w;
-  if (!(sum > 0)) return {1, 0, 0};   // unreachable for finite input; keeps NaN out
-  return {u / sum, v / sum, w / sum};
+  return w[best];
 }
 
 ClosestPoint closest_surface_point(const TriangleMesh& mesh, Vec3 p) {
