@@ -137,6 +137,18 @@ void Walk::reach_target(Walker& w, Walker next, int top) {
   // A source with sigma > 0 next to a corner is that corner (a turn of the geodesic): the
   // float-stored source misses the vertex by about 1e-5 of an edge on fine meshes.
   const bool at_corner = next.bary[top] >= 1 - kCornerSnap;
+  if (w.own && w.sigma > eps_ && !at_corner) {
+    // A turn at a vertex that lies on this face's edge without being its corner: a face without
+    // area joins it there (a CAD part's T-junction). The walk goes on from that
+    // vertex; before, it ended there as if at the source (a CAD wall: 3.6 of 12.3 units).
+    const Index u = vertex_across(w.face, w.target);
+    if (u != kInvalidIndex) {
+      w = next;
+      w.sigma = kInf;
+      step_vertex(u, w);
+      return;
+    }
+  }
   if (w.own && (w.sigma <= eps_ || !at_corner)) {
     out_.source = w.label;   // the real source (a vertex, or a face point)
     at_source_ = true;
@@ -154,6 +166,22 @@ void Walk::reach_target(Walker& w, Walker next, int top) {
   // field used; go on with the face's own source.
   w = next;
   adopt_own(w);
+}
+
+// The vertex at x (within kCornerSnap of the face's longest edge) among the vertices of the
+// faces at f's corners (a T-junction's vertex is the far corner of a face without area across
+// one of f's edges, or of one beyond it in a chain of such faces along the edge);
+// kInvalidIndex if none.
+Index Walk::vertex_across(Index f, Vec3 x) const {
+  const Triangle& t = mesh_.triangles[f];
+  const double tol = kCornerSnap * std::max({distance(mesh_.positions[t[0]], mesh_.positions[t[1]]),
+                                             distance(mesh_.positions[t[1]], mesh_.positions[t[2]]),
+                                             distance(mesh_.positions[t[2]], mesh_.positions[t[0]])});
+  for (const Index c : t)
+    for (Index k = conn_.vertex_corner_begin[c]; k < conn_.vertex_corner_begin[c + 1]; ++k)
+      for (const Index u : mesh_.triangles[face_of(conn_.vertex_corners[k])])
+        if (u != t[0] && u != t[1] && u != t[2] && distance(mesh_.positions[u], x) <= tol) return u;
+  return kInvalidIndex;
 }
 
 // The walk leaves w's face over the edge opposite exit_corner, at `next`: into the neighbour,

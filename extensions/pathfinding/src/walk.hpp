@@ -112,6 +112,9 @@ class Walk {
   enum class VertexStep { moved, source, keep, stuck };
   VertexStep at_vertex(Index v, Walker& w);
   bool cross(const Walker& from, Index h, const Bary& bq, Walker& to) const;
+  bool unfold_target(const Walker& from, Index h, Index g, Vec3& target) const;
+  bool cross_past_flat(const Walker& from, Index h, Walker& to) const;
+  double continuation_mismatch(const Walker& from, Index h, Index g, Vec3 q) const;
 
   // The walk's course (walk.cpp).
   Walker start(const Endpoint& end);
@@ -120,6 +123,7 @@ class Walk {
   void prefer_own(Walker& w) const;
   void step(Walker& w);
   void reach_target(Walker& w, Walker next, int top);
+  Index vertex_across(Index f, Vec3 x) const;
   void leave_face(Walker& w, const Walker& next, int exit_corner);
   void pull_taut();
   void keep_shortest(std::vector<PathPoint>& taut, const PathPoint& first, const PathPoint& last);

@@ -31,6 +31,11 @@ bool Walk::exit_of(const Walker& w, double& t_exit, int& exit_corner, Bary& bs) 
 // straight line v -> S actually enters. `keep` when the source w carries is shorter than all.
 Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
   const Vec3 pv = mesh_.positions[v];
+  // A source unfolded onto v's position is v only where v's own value is 0: on a CAD wall an
+  // unfolding of the source landed on a vertex 8 units from it and the walk ended there as if
+  // at the source (docs/pathfinding.md, "Needles, fins and T-junctions").
+  const std::vector<double>& values = field_.vertex_distance();
+  const double dv = v < values.size() ? values[v] : kInf;
   double best = kInf, best_any = kInf;
   Index best_corner = kInvalidIndex, best_any_corner = kInvalidIndex, at_v = kInvalidIndex;
   for (Index k = conn_.vertex_corner_begin[v]; k < conn_.vertex_corner_begin[v + 1]; ++k) {
@@ -42,8 +47,11 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
       // The face's source sits on v: v is the real source (sigma 0), or the path turned here
       // and this face does not lead further.
       if (s.sigma <= eps_) {
-        out_.source = s.source;
-        return VertexStep::source;
+        if (!(dv > 10 * eps_ && dv < kInf)) {
+          out_.source = s.source;
+          return VertexStep::source;
+        }
+        continue;
       }
       at_v = f;
       continue;
@@ -78,16 +86,48 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
   return VertexStep::moved;
 }
 
-// Crosses halfedge h of `from` at its point bq into the neighbour that continues the path best
-// (at a non-manifold edge: the smallest own distance at the crossing), carrying from's target
-// over, unfolded about the edge into the neighbour's plane.
-bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const {
+// from's target unfolded about the edge of halfedge h into the plane of the neighbour across
+// it (halfedge g): edge frame x along a -> b, y towards each face's third corner; the target
+// lies on the far side of the edge seen from `from`, i.e. on the neighbour's side. False for
+// an edge of zero length (no frame).
+bool Walk::unfold_target(const Walker& from, Index h, Index g, Vec3& target) const {
   const Index a = from_vertex(mesh_, h), b = to_vertex(mesh_, h);
+  const Vec3 pa = mesh_.positions[a], pb = mesh_.positions[b];
+  const double len = distance(pa, pb);
+  if (!(len > 0)) return false;
+  const Vec3 c_from = mesh_.positions[mesh_.triangles[from.face][corner_of(prev_halfedge(h))]];
+  const Vec3 c_to = mesh_.positions[mesh_.triangles[face_of(g)][corner_of(prev_halfedge(g))]];
+  const Vec3 ex = (1.0 / len) * (pb - pa);
+  auto normal_dir = [&](Vec3 c) {
+    const Vec3 y = (c - pa) - dot(c - pa, ex) * ex;
+    const double n = norm(y);
+    return n > 0 ? (1.0 / n) * y : Vec3{};
+  };
+  const Vec3 yf = normal_dir(c_from), yt = normal_dir(c_to);
+  const double x = dot(from.target - pa, ex), y = dot(from.target - pa, yf);
+  target = pa + x * ex - y * yt;
+  return true;
+}
+
+// How far the face of halfedge g (across h's edge, or past faces without area along it) is
+// from going on straight: from's target unfolded into its plane against its own source at q
+// (position and sigma); 0 where there is nothing to compare.
+double Walk::continuation_mismatch(const Walker& from, Index h, Index g, Vec3 q) const {
+  Vec3 unfolded;
+  if (!(from.sigma < kInf) || !unfold_target(from, h, g, unfolded)) return 0.0;
+  const VirtualSource own = field_.source_at(face_of(g), q);
+  return distance(unfolded, own.position) + std::abs(from.sigma - own.sigma);
+}
+
+// Crosses halfedge h of `from` at its point bq into the neighbour that continues the path best
+// (at a non-manifold edge: the smallest own distance at the crossing; of neighbours that tie,
+// the one whose own source is where from's target unfolds to, i.e. where the straight line
+// goes on), carrying from's target over, unfolded about the edge into the neighbour's plane.
+bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const {
+  const Index a = from_vertex(mesh_, h);
   const double wa = bq[corner_of(h)], wb = bq[corner_of(next_halfedge(h))];
   const double s = wa + wb > 0 ? wb / (wa + wb) : 0.5;   // q = (1 - s) a + s b
   const Vec3 q = from.position;
-  double best = kInf;
-  Index pick = kInvalidIndex;
   // Back over the edge it came by, where more than two faces meet: not into the face it came
   // from. On a house STL's fin two faces of such an edge each held a source across it, and the
   // walk went back and forth between them until its step limit; the path then fell back to
@@ -95,13 +135,34 @@ bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const 
   const bool shared = from.came_over != kInvalidIndex && conn_.halfedge_edge[h] == from.came_over &&
                       conn_.radial_next[conn_.radial_next[h]] != h;
   const Index came_from = shared ? from.came_from : kInvalidIndex;
-  for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
+  auto candidate = [&](Index g) {
     const Index f = face_of(g);
-    if (f == from.face || f == came_from || !usable(f)) continue;
-    const double d = own_value(f, q);
-    if (pick == kInvalidIndex || d < best) best = d, pick = g;
+    return f != from.face && f != came_from && usable(f);
+  };
+  Index first = kInvalidIndex;
+  double best = kInf;
+  for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
+    if (!candidate(g)) continue;
+    if (first == kInvalidIndex) first = g;
+    best = std::min(best, own_value(face_of(g), q));
   }
-  if (pick == kInvalidIndex) return false;
+  if (first == kInvalidIndex) return cross_past_flat(from, h, to);
+  // The neighbours within rounding of the best: on a wall meeting a ledge at a non-manifold
+  // edge the crossing point has one distance in every face of the edge, and the first face of
+  // the ring (the ledge's, its source unfolded from the far side) turned a wall path into a
+  // 6% longer one (docs/pathfinding.md, "Needles, fins and T-junctions"). No finite value:
+  // the first.
+  Index pick = first;
+  if (best < kInf) {
+    const double tol = 1e-6 * best + 10 * eps_;
+    double best_mismatch = kInf;
+    pick = kInvalidIndex;
+    for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
+      if (!candidate(g) || !(own_value(face_of(g), q) <= best + tol)) continue;
+      const double mismatch = continuation_mismatch(from, h, g, q);
+      if (pick == kInvalidIndex || mismatch < best_mismatch) best_mismatch = mismatch, pick = g;
+    }
+  }
   const Index f = face_of(pick);
   to = from;
   to.face = f;
@@ -111,25 +172,10 @@ bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const 
   to.bary[corner_of(next_halfedge(pick))] = same ? s : 1 - s;
   to.entry = pick;
   to.came_from = from.face, to.came_over = conn_.halfedge_edge[pick];
-  // Unfold: edge frame (x along a -> b, y towards each face's third corner); the target lies on
-  // the far side of the edge seen from `from`, i.e. on the neighbour's side.
-  const Vec3 pa = mesh_.positions[a], pb = mesh_.positions[b];
-  const double len = distance(pa, pb);
-  const Vec3 c_from = mesh_.positions[mesh_.triangles[from.face][corner_of(prev_halfedge(h))]];
-  const Vec3 c_to = mesh_.positions[mesh_.triangles[f][corner_of(prev_halfedge(pick))]];
-  if (!(len > 0)) {
+  if (!unfold_target(from, h, pick, to.target)) {
     adopt_own(to);
     return true;
   }
-  const Vec3 ex = (1.0 / len) * (pb - pa);
-  auto normal_dir = [&](Vec3 c) {
-    const Vec3 y = (c - pa) - dot(c - pa, ex) * ex;
-    const double n = norm(y);
-    return n > 0 ? (1.0 / n) * y : Vec3{};
-  };
-  const Vec3 yf = normal_dir(c_from), yt = normal_dir(c_to);
-  const double x = dot(from.target - pa, ex), y = dot(from.target - pa, yf);
-  to.target = pa + x * ex - y * yt;
   to.own = false;
   return true;
 }
