@@ -129,6 +129,7 @@ std::size_t run(cli::Context& ctx, const Options& o) {
   ctx.stats()["result"]["reversed"] = r.reversed;
   ctx.stats()["result"]["edge_fallbacks"] = r.edge_fallbacks;
   ctx.stats()["result"]["astar_fallbacks"] = r.astar_fallbacks;
+  ctx.stats()["result"]["astar_shorter"] = r.astar_shorter;
   ctx.stats()["result"]["max_snap_distance"] = snapped;
   cli::Json& ops = ctx.operations();
   ops["faces_expanded"] = r.stats.faces_reached;

@@ -57,6 +57,9 @@ struct PathQueryResult {
   // Method windows: paths to end points the windows did not reach (they cross only shared
   // edges; GSP also joins vertices at one position, as on open seams) taken from GSP's A*.
   std::size_t astar_fallbacks = 0;
+  // Method windows: paths replaced by GSP's A* path to the same end, a shorter polyline on the
+  // surface (the windows the walk follows can miss a corridor GSP's field finds).
+  std::size_t astar_shorter = 0;
   double compute_seconds = 0, trace_seconds = 0;   // both directions together
 };
 
@@ -70,9 +73,9 @@ struct PathQueryResult {
 PathQueryResult shortest_paths(const GeodesicSolver& solver, const PathTracer& tracer, const Endpoint& from,
                                const std::vector<Endpoint>& to, const PathQueryOptions& options = {});
 
-// The same without a prepared GeodesicSolver (one-shot runs: gsp-path). PathMethod::windows
-// needs none; one is built from tracer.mesh() only when an end point needs GSP's A* path
-// (astar_fallbacks). For GSP's methods one is built first.
+// The same without a prepared GeodesicSolver (one-shot runs: gsp-path). One is built from
+// tracer.mesh() for GSP's methods, and for PathMethod::windows too, whose paths are set against
+// GSP's A* paths to the same ends (astar_shorter, astar_fallbacks).
 PathQueryResult shortest_paths(const PathTracer& tracer, const Endpoint& from, const std::vector<Endpoint>& to,
                                const PathQueryOptions& options = {});
 
