@@ -6,20 +6,27 @@
 
 #include <algorithm>
 #include <array>
+#include <unordered_map>
 
 namespace gsp::pathfinding::detail {
 
 void Sleeve::remove_loops() {
+  // The kept faces are distinct, so each has one place, found by a hash map instead of a scan
+  // of all kept faces: the scan made this quadratic in the sleeve's length, and it runs after
+  // every rerouting round (on a CAD part of needles, 11% of gsp-path's time).
   std::vector<Index> f2, e2, x2;
+  std::unordered_map<Index, std::size_t> place;
+  place.reserve(faces.size());
   for (std::size_t k = 0; k < faces.size(); ++k) {
-    std::size_t at = f2.size();
-    for (std::size_t m = 0; m < f2.size(); ++m)
-      if (f2[m] == faces[k]) at = m;
-    if (at < f2.size()) {   // back at f2[at]: drop what came after it, leave by this exit
+    const auto found = place.find(faces[k]);
+    if (found != place.end()) {   // back at f2[at]: drop what came after it, leave by this exit
+      const std::size_t at = found->second;
+      for (std::size_t m = at + 1; m < f2.size(); ++m) place.erase(f2[m]);
       f2.resize(at + 1), e2.resize(at + 1), x2.resize(at + 1);
       x2[at] = exit[k];
       continue;
     }
+    place.emplace(faces[k], f2.size());
     f2.push_back(faces[k]), e2.push_back(entry[k]), x2.push_back(exit[k]);
   }
   faces.swap(f2), entry.swap(e2), exit.swap(x2);
