@@ -8,6 +8,7 @@
 
 #include "source_field.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <limits>
@@ -115,6 +116,33 @@ class Walk {
   bool unfold_target(const Walker& from, Index h, Index g, Vec3& target) const;
   bool cross_past_flat(const Walker& from, Index h, Walker& to) const;
   double continuation_mismatch(const Walker& from, Index h, Index g, Vec3 q) const;
+  // Of the faces across h's edge that each(visit) lists (it calls visit(g) for the halfedge g
+  // of each, and is called twice): the least own distance at q and, of those within rounding
+  // of it, the face where the straight line goes on (continuation_mismatch; at a fin edge or a
+  // T-junction several faces give q one distance). The first listed where no value is finite;
+  // kInvalidIndex where none is listed.
+  template <class ForEach>
+  Index best_neighbour(const Walker& from, Index h, Vec3 q, ForEach&& each) const {
+    Index first = kInvalidIndex;
+    double best = kInf;
+    each([&](Index g) {
+      if (first == kInvalidIndex) first = g;
+      best = std::min(best, own_value(face_of(g), q));
+    });
+    if (!(best < kInf)) return first;
+    const double tol = 1e-6 * best + 10 * eps_;
+    Index pick = kInvalidIndex;
+    double best_mismatch = kInf;
+    each([&](Index g) {
+      if (!(own_value(face_of(g), q) <= best + tol)) return;
+      const double mismatch = continuation_mismatch(from, h, g, q);
+      if (pick == kInvalidIndex || mismatch < best_mismatch) best_mismatch = mismatch, pick = g;
+    });
+    return pick;
+  }
+  // `to`: `from` in the face of halfedge g at weights b, the target it carries unfolded about
+  // h's edge into that face's plane (the face's own source where the edge has no length).
+  void enter(const Walker& from, Index h, Index g, const Bary& b, Walker& to) const;
 
   // The walk's course (walk.cpp).
   Walker start(const Endpoint& end);

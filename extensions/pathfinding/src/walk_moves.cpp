@@ -135,49 +135,36 @@ bool Walk::cross(const Walker& from, Index h, const Bary& bq, Walker& to) const 
   const bool shared = from.came_over != kInvalidIndex && conn_.halfedge_edge[h] == from.came_over &&
                       conn_.radial_next[conn_.radial_next[h]] != h;
   const Index came_from = shared ? from.came_from : kInvalidIndex;
-  auto candidate = [&](Index g) {
-    const Index f = face_of(g);
-    return f != from.face && f != came_from && usable(f);
-  };
-  Index first = kInvalidIndex;
-  double best = kInf;
-  for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
-    if (!candidate(g)) continue;
-    if (first == kInvalidIndex) first = g;
-    best = std::min(best, own_value(face_of(g), q));
-  }
-  if (first == kInvalidIndex) return cross_past_flat(from, h, to);
-  // The neighbours within rounding of the best: on a wall meeting a ledge at a non-manifold
-  // edge the crossing point has one distance in every face of the edge, and the first face of
-  // the ring (the ledge's, its source unfolded from the far side) turned a wall path into a
-  // 6% longer one (docs/pathfinding.md, "Needles, fins and T-junctions"). No finite value:
-  // the first.
-  Index pick = first;
-  if (best < kInf) {
-    const double tol = 1e-6 * best + 10 * eps_;
-    double best_mismatch = kInf;
-    pick = kInvalidIndex;
+  // Neighbours within rounding of each other: on a wall meeting a ledge at a non-manifold edge
+  // the crossing point has one distance in every face of the edge, and the first face of the
+  // ring (the ledge's, its source unfolded from the far side) turned a wall path into a 6%
+  // longer one (docs/pathfinding.md, "Needles, fins and T-junctions").
+  const Index pick = best_neighbour(from, h, q, [&](auto&& visit) {
     for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
-      if (!candidate(g) || !(own_value(face_of(g), q) <= best + tol)) continue;
-      const double mismatch = continuation_mismatch(from, h, g, q);
-      if (pick == kInvalidIndex || mismatch < best_mismatch) best_mismatch = mismatch, pick = g;
+      const Index f = face_of(g);
+      if (f != from.face && f != came_from && usable(f)) visit(g);
     }
-  }
-  const Index f = face_of(pick);
-  to = from;
-  to.face = f;
-  to.bary = {0, 0, 0};
+  });
+  if (pick == kInvalidIndex) return cross_past_flat(from, h, to);
   const bool same = from_vertex(mesh_, pick) == a;   // the neighbour may walk the edge either way
-  to.bary[corner_of(pick)] = same ? 1 - s : s;
-  to.bary[corner_of(next_halfedge(pick))] = same ? s : 1 - s;
-  to.entry = pick;
-  to.came_from = from.face, to.came_over = conn_.halfedge_edge[pick];
-  if (!unfold_target(from, h, pick, to.target)) {
+  Bary b{0, 0, 0};
+  b[corner_of(pick)] = same ? 1 - s : s;
+  b[corner_of(next_halfedge(pick))] = same ? s : 1 - s;
+  enter(from, h, pick, b, to);
+  return true;
+}
+
+void Walk::enter(const Walker& from, Index h, Index g, const Bary& b, Walker& to) const {
+  to = from;
+  to.face = face_of(g);
+  to.bary = b;
+  to.entry = g;
+  to.came_from = from.face, to.came_over = conn_.halfedge_edge[g];
+  if (!unfold_target(from, h, g, to.target)) {
     adopt_own(to);
-    return true;
+    return;
   }
   to.own = false;
-  return true;
 }
 
 }  // namespace gsp::pathfinding::detail

@@ -41,7 +41,6 @@ bool Walk::cross_past_flat(const Walker& from, Index h, Walker& to) const {
   for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) visit(g);
   std::array<Index, 2 * kMaxFlatChain> found{};
   std::size_t n_found = 0;
-  double best = kInf;
   while (top > 0) {
     const Index g = stack[--top];
     for (const Index e : {next_halfedge(g), prev_halfedge(g)}) {
@@ -49,45 +48,25 @@ bool Walk::cross_past_flat(const Walker& from, Index h, Walker& to) const {
       for (Index r = conn_.radial_next[e]; r != e; r = conn_.radial_next[r]) {
         const Index f = face_of(r);
         if (f == from.face) continue;
-        if (usable(f)) {
-          if (n_found < found.size()) found[n_found++] = r;
-          best = std::min(best, own_value(f, q));
-        } else {
-          visit(r);
-        }
+        if (!usable(f)) visit(r);
+        else if (n_found < found.size()) found[n_found++] = r;
       }
     }
   }
-  // As in cross(): the least own distance at q, and of those within rounding of it the face
-  // where the straight line goes on (past a T-junction's vertex the faces on both sides of it
-  // give q one distance).
-  Index pick = n_found > 0 ? found[0] : kInvalidIndex;
-  if (best < kInf) {
-    const double tol = 1e-6 * best + 10 * eps_;
-    double best_mismatch = kInf;
-    for (std::size_t k = 0; k < n_found; ++k) {
-      if (!(own_value(face_of(found[k]), q) <= best + tol)) continue;
-      const double mismatch = continuation_mismatch(from, h, found[k], q);
-      if (mismatch < best_mismatch) best_mismatch = mismatch, pick = found[k];
-    }
-  }
+  // As in cross() (past a T-junction's vertex the faces on both sides of it give q one
+  // distance).
+  const Index pick = best_neighbour(from, h, q, [&](auto&& visit_face) {
+    for (std::size_t k = 0; k < n_found; ++k) visit_face(found[k]);
+  });
   if (pick == kInvalidIndex) return false;
   const Vec3 pa = mesh_.positions[from_vertex(mesh_, pick)], pb = mesh_.positions[to_vertex(mesh_, pick)];
   const Vec3 d = pb - pa;
   const double dd = dot(d, d);
   const double s = dd > 0 ? std::clamp(dot(q - pa, d) / dd, 0.0, 1.0) : 0.0;
-  to = from;
-  to.face = face_of(pick);
-  to.bary = {0, 0, 0};
-  to.bary[corner_of(pick)] = 1 - s;
-  to.bary[corner_of(next_halfedge(pick))] = s;
-  to.entry = pick;
-  to.came_from = from.face, to.came_over = conn_.halfedge_edge[pick];
-  if (from.sigma < kInf && unfold_target(from, h, pick, to.target)) {
-    to.own = false;
-  } else {
-    adopt_own(to);
-  }
+  Bary b{0, 0, 0};
+  b[corner_of(pick)] = 1 - s;
+  b[corner_of(next_halfedge(pick))] = s;
+  enter(from, h, pick, b, to);
   return true;
 }
 
