@@ -161,5 +161,29 @@ TEST(GeodesicCarriedWindows, ScansAndTheirSplitsAreUntouched) {
   }
 }
 
+// Two rings of slivers (aspect above the limit of the straight steps' bends): a straight step
+// into them is not bent, but the bends they pass on at their corners are held against the
+// window (rule 10, last paragraph): a bend at a corner the window hides bends at the bound
+// instead. Without (the windows then bent nothing here): 0.294% MRE from the hole's rim and
+// from the bottom; with: 0.180%, the lowest value 0.9999 of exact.
+TEST(GeodesicCarriedWindows, BendsAtHiddenCornersOfSlivers) {
+  const TriangleMesh m = ringed_plate_with_hole(10, 3, 1, kSegments, 2);
+  const Index top = Index(3 * kSegments);
+  const GeodesicSolver solver(m);
+  reference::ExactGeodesicSolver exact(m);
+  for (Index s : {top, Index(top + 9), Index(0)}) {
+    const std::vector<double> ex = exact.distances_from_vertex(s);
+    const GeodesicResult on = solver.compute({Source::at_vertex(s)}, windows(true));
+    const GeodesicResult off = solver.compute({Source::at_vertex(s)}, windows(false));
+    double lowest = 1;
+    for (std::size_t v = 0; v < m.num_vertices(); ++v)
+      if (ex[v] > 0) lowest = std::min(lowest, on.vertex_distance[v] / ex[v]);
+    EXPECT_GT(on.stats.window_bends, 0u) << "source " << s;
+    EXPECT_LT(mre(on.vertex_distance, ex), 0.7 * mre(off.vertex_distance, ex)) << "source " << s;
+    EXPECT_LT(mre(on.vertex_distance, ex), 0.0022) << "source " << s;
+    EXPECT_GT(lowest, 0.995) << "source " << s;
+  }
+}
+
 }  // namespace
 }  // namespace gsp::test

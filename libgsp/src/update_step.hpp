@@ -203,15 +203,16 @@ class UpdateStep {
     int probed = 0;   // what the probe alone said
     Real qx = 0, qy = 0;   // where it looked from
     const int kind = choose_path(t, cj, v, u, probed, qx, qy);
-    Path p = path_of(kind, sigma, v.e1, u);
-    if (!improves(t, p.dT, p.sigma)) return;
-    bool straight = kind == 0;
     WindowSides own;            // the window T keeps if it takes the straight path (Windows only)
     std::uint8_t flags = 0;     // T's window_face_flags()
     if constexpr (Windows) {
       own = WindowSides::none();
       flags = window_flags_[face_of(g)];
     }
+    Path p = Windows ? bend_or_window(kind, sigma, v.e1, u, cj, flags, sides, link, h_dir, e1h)
+                     : path_of(kind, sigma, v.e1, u);
+    if (!improves(t, p.dT, p.sigma)) return;
+    bool straight = kind == 0;
     // The sending face's window comes along only over an edge between coplanar faces: in a
     // planar region a bend at a hiding rim vertex is the true path; on curved surfaces GSP's
     // straight values below exact and bent ones above cancel.
@@ -238,7 +239,9 @@ class UpdateStep {
     // face refuses the straight one it refuses the bend too.
     if (straight && line_.sources && straight_below_line(g, cj, v, u, sigma, source)) {
       ++stats_.straight_line_bends;
-      p = path_of(probed != 0 ? probed : shorter_bend(u, v.e1), sigma, v.e1, u);
+      const int bend = probed != 0 ? probed : shorter_bend(u, v.e1);
+      p = Windows ? bend_or_window(bend, sigma, v.e1, u, cj, flags, sides, link, h_dir, e1h)
+                  : path_of(bend, sigma, v.e1, u);
       if (!improves(t, p.dT, p.sigma)) return;
       straight = false;
     }
@@ -392,6 +395,25 @@ class UpdateStep {
     }
     const Real s = sigma + std::sqrt((sx - e1) * (sx - e1) + sy * sy);
     return {s, s + std::sqrt((cx - e1) * (cx - e1) + cy * cy), e1, Real(0)};
+  }
+
+  // A bend at T's end A (kind 1) or B (kind 2) with carried windows (rule 10): where the
+  // sending face's window hides that end (the line from the source to it passes a bound on its
+  // hidden side: the source seen round a hole, one face at a time, though not from the end),
+  // sigma + |S - end| is no surface path's length, and the path bends at the bound instead,
+  // as a hidden straight step does (a virtual source at a vertex that is not T's own corner).
+  // Over edges between coplanar faces only, like the window itself. Any other kind: path_of.
+  Path bend_or_window(int kind, Real sigma, Real e1, const Unfolded& u, Index cj, std::uint8_t flags,
+                      const WindowSides& sides, Index link, bool h_dir, Real e1h) {
+    if (kind == 0 || !(flags & (kWindowEdge0 << cj)) || !sides.any()) return path_of(kind, sigma, e1, u);
+    const WindowSides own = unfold_sides(sides, same_direction(link, h_dir), float(e1h));
+    const Real ex = kind == 1 ? Real(0) : e1;
+    const int k = hidden_by(own, u.sx, u.sy, ex, Real(0), ex, Real(0), e1);
+    if (k < 0) return path_of(kind, sigma, e1, u);
+    ++stats_.window_bends;
+    const Real wx = Real(own.x[k]), wy = Real(own.y[k]);
+    const Real s = sigma + std::sqrt((wx - u.sx) * (wx - u.sx) + (wy - u.sy) * (wy - u.sy));
+    return {s, s + std::sqrt((u.cx - wx) * (u.cx - wx) + (u.cy - wy) * (u.cy - wy)), wx, wy};
   }
 
   // The straight-line test (StraightLineTest): whether the straight path reaches T's new
