@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <string>
 #include <vector>
 
 namespace {
@@ -186,6 +188,24 @@ TEST(SamplingPoisson, OneLargeTriangleIsFilled) {
       hole = std::max(hole, nearest);
     }
   EXPECT_LT(hole, 2 * radius);
+}
+
+// Faces written twice (an STL's doubled triangles, both orientations): the solver keeps one of
+// each, so the propagations never reach the copies. Darts on a copy were accepted without end
+// (libigl_degenerated.obj, 7 vertices: gsp-sample ran until killed); now darts land only on
+// the faces that take part, and the samples are those of the mesh without its copies.
+TEST(SamplingPoisson, DoubledFacesAreSampledOnce) {
+  const TriangleMesh once = test::flat_disk(1.0, 12);
+  TriangleMesh twice = once;
+  for (const Triangle& t : once.triangles) twice.triangles.push_back({t[0], t[2], t[1]});
+  SamplingOptions o;
+  o.radius = 0.1;
+  o.seed = 3;
+  const auto a = Sampler(once).sample(o), b = Sampler(twice).sample(o);
+  ASSERT_GT(a.samples.size(), 50u);
+  ASSERT_EQ(a.samples.size(), b.samples.size());
+  for (std::size_t i = 0; i < a.samples.size(); ++i) EXPECT_EQ(a.samples[i].position, b.samples[i].position);
+  EXPECT_DOUBLE_EQ(Sampler(once).area(), Sampler(twice).area());
 }
 
 TEST(SamplingPoisson, ExactCountKeepsTheRadius) {

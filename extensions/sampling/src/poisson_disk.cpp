@@ -2,6 +2,8 @@
 #include "coverage_field.hpp"
 
 #include <gsp/available_memory.hpp>
+#include <gsp/connectivity.hpp>
+#include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
 
@@ -13,13 +15,23 @@
 
 namespace gsp::sampling {
 
+namespace {
+
+std::vector<bool> faces_taking_part(const TriangleMesh& mesh) {
+  std::vector<bool> part = intrinsic::skipped_faces(mesh, build_connectivity(mesh));
+  for (std::size_t f = 0; f < part.size(); ++f) part[f] = !part[f] && triangle_area(mesh, Index(f)) > 0;
+  return part;
+}
+
+}  // namespace
+
 Sampler::Sampler(const TriangleMesh& mesh, const SolverOptions& options)
-    : mesh_(mesh), solver_(mesh, options), points_(mesh) {
+    : mesh_(mesh), solver_(mesh, options), taking_part_(faces_taking_part(mesh)), points_(mesh, taking_part_) {
   referenced_.assign(mesh.num_vertices(), false);
   vertex_face_.assign(mesh.num_vertices(), kInvalidIndex);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    if (triangle_area(mesh, Index(f)) <= 0) continue;   // a sample there would have no normal
+    if (!taking_part_[f]) continue;   // no area (a sample there would have no normal), or a copy
     for (int i = 0; i < 3; ++i) {
       referenced_[t[i]] = true;
       if (vertex_face_[t[i]] == kInvalidIndex) vertex_face_[t[i]] = Index(f);
@@ -138,7 +150,7 @@ SamplingResult Sampler::poisson(double radius, const SamplingOptions& options) c
       const Triangle& t = mesh_.triangles[f];
       double longest = 0;
       for (int i = 0; i < 3; ++i) longest = std::max(longest, distance(mesh_.positions[t[i]], mesh_.positions[t[(i + 1) % 3]]));
-      large[f] = longest > radius && triangle_area(mesh_, Index(f)) > 0;
+      large[f] = longest > radius && taking_part_[f];
       any = any || large[f];
     }
     if (any) {

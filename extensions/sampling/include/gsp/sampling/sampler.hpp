@@ -109,6 +109,11 @@ class Sampler {
 
   const TriangleMesh& mesh_;
   GeodesicSolver solver_;
+  // Faces that are part of the surface as the solver sees it (not a face naming a vertex twice,
+  // nor a doubled face's copy: gsp/intrinsic/edge_lengths.hpp), with a positive area. Darts
+  // land on these only: the propagations never reach a copy, so a sample there was never seen
+  // by the next candidate's test and darts on it were accepted without end.
+  std::vector<bool> taking_part_;
   AreaSampler points_;
   double diagonal_ = 0, longest_edge_ = 0;
   std::vector<bool> referenced_;
