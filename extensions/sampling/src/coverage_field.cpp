@@ -9,6 +9,7 @@ namespace gsp::sampling::detail {
 
 CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& referenced, double radius)
     : vertex_(referenced.size(), std::numeric_limits<double>::infinity()),
+      run_vertex_(referenced.size(), std::numeric_limits<double>::infinity()),
       centroid_radius_(mesh.num_faces(), 0.0),
       head_(mesh.num_faces(), -1),
       sample_head_(mesh.num_faces(), -1),
@@ -25,13 +26,35 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
     for (Index v : t) centroid_radius_[f] = std::max(centroid_radius_[f], distance(c, mesh.positions[v]));
   }
   for (bool r : referenced) referenced_count_ += r;
+  vertex_face_begin_.assign(referenced.size() + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) ++vertex_face_begin_[v + 1];
+  for (std::size_t v = 0; v < referenced.size(); ++v) vertex_face_begin_[v + 1] += vertex_face_begin_[v];
+  vertex_faces_.resize(vertex_face_begin_.back());
+  std::vector<Index> fill(vertex_face_begin_.begin(), vertex_face_begin_.end() - 1);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    for (Index v : mesh.triangles[f]) vertex_faces_[fill[v]++] = Index(f);
   // A maximal Poisson set's discs cover the surface about three times: one entry per face each.
   pool_.reserve(3 * mesh.num_faces());
   uncovered_ = referenced_count_;
 }
 
 bool CoverageField::clear_of_samples(const LocalField& run) const {
-  for (std::size_t k = 0; k < run.faces.size(); ++k) {
+  // Through a corner (corner_bound): the samples of the faces round every vertex the run
+  // reached within r, where a face holds few (more than kDense: a face large against r, whose
+  // own virtual source is what reaches its inside). By vertex, not by the run's faces: a
+  // sliver whose one virtual source reads as farther than r is not among those.
+  for (std::size_t k = 0; k < run.vertices.size(); ++k) run_vertex_[run.vertices[k]] = run.vertex_distance[k];
+  bool clear = true;
+  for (std::size_t k = 0; k < run.vertices.size() && clear; ++k) {
+    const Index v = run.vertices[k];
+    for (Index c = vertex_face_begin_[v]; c < vertex_face_begin_[v + 1] && clear; ++c) {
+      const Index f = vertex_faces_[c];
+      for (std::int32_t e = sample_count_[f] <= kDense ? sample_head_[f] : -1; e >= 0 && clear; e = sample_next_[e])
+        clear = !(corner_bound(f, sample_position_[e], run_vertex_) < radius_);
+    }
+  }
+  for (std::size_t k = 0; k < run.faces.size() && clear; ++k) {
     const Index f = run.faces[k];
     if (sample_head_[f] < 0 || !near(run, k)) continue;
     const VirtualSource& vs = run.face_sources[k];
@@ -41,9 +64,10 @@ bool CoverageField::clear_of_samples(const LocalField& run) const {
       sample_cells_.near(f, vs.position, check);   // a sample closer than r - sigma lies in the cubes around it
     else
       for (std::int32_t e = sample_head_[f]; e >= 0 && !close; e = sample_next_[e]) check(e);
-    if (close) return false;
+    clear = !close;
   }
-  return true;
+  for (Index v : run.vertices) run_vertex_[v] = std::numeric_limits<double>::infinity();
+  return clear;
 }
 
 void CoverageField::add_sample(Index face, const std::array<double, 3>& barycentric) {

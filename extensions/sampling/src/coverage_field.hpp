@@ -37,9 +37,12 @@ class CoverageField {
   void merge(const LocalField& run);
 
   // Distance from the point p of face f to the nearest sample so far, exact where it is
-  // below r; at or above r it may be any value at or above r (+inf if none near).
+  // below r; at or above r it may be any value at or above r (+inf if none near). The lower
+  // of the face's virtual sources and its corners' values plus the straight segment to p
+  // (corner_bound): each is the length of a path, and on a long sliver the one virtual source
+  // can be a bend that is right for one end and far too long at the other.
   double distance_at(Index face, Vec3 p) const {
-    double best = std::numeric_limits<double>::infinity();
+    double best = corner_bound(face, p, vertex_);
     auto take = [&](std::int32_t e) {
       const double d = pool_[e].sigma + distance(p, pool_[e].position);
       if (d < best) best = d;
@@ -61,6 +64,15 @@ class CoverageField {
     double sigma;
     std::int32_t next;
   };
+  // min over the corners c of face f of d[c] + |p - c|: a path to p through a corner along the
+  // straight segment inside the face.
+  double corner_bound(Index face, Vec3 p, const std::vector<double>& d) const {
+    const Triangle& t = mesh_.triangles[face];
+    double best = std::numeric_limits<double>::infinity();
+    for (Index v : t)
+      if (d[v] < best) best = std::min(best, d[v] + distance(p, mesh_.positions[v]));
+    return best;
+  }
   // A face can hold a point within r of the run's source.
   bool near(const LocalField& run, std::size_t k) const {
     return run.face_distance[k] - centroid_radius_[run.faces[k]] < radius_;
@@ -68,6 +80,10 @@ class CoverageField {
   static constexpr std::uint32_t kDense = 16;   // items a face keeps in its list
   void add_source(Index face, Vec3 position, double sigma);
   std::vector<double> vertex_;
+  // clear_of_samples' scratch: the run's vertex distances by vertex (+inf elsewhere), reset
+  // after each run.
+  mutable std::vector<double> run_vertex_;
+  std::vector<Index> vertex_face_begin_, vertex_faces_;   // the faces round each vertex
   std::vector<double> centroid_radius_;   // per face: largest centroid-to-corner distance
   std::vector<std::int32_t> head_;
   std::vector<Entry> pool_;

@@ -47,7 +47,7 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   go.max_distance = bound;   // every face that can hold a point within it is reached
   go.want_face_sources = true;
   q.min_distance = bound;
-  std::vector<double> coverage(mesh.num_vertices(), inf);
+  std::vector<double> coverage(mesh.num_vertices(), inf), run_vertex(mesh.num_vertices(), inf);
   LocalWorkspace workspace = sampler.solver().make_workspace();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Sample& s = samples[i];
@@ -56,13 +56,24 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
       coverage[run.vertices[k]] = std::min(coverage[run.vertices[k]], run.vertex_distance[k]);
     if (is_checked[i]) {
       ++q.samples_checked;
+      // The run's vertex values by vertex (put back below): a sample's distance is at most a
+      // corner's value plus the straight segment from it, and on a long sliver the face's one
+      // virtual source can be a bend far too long at the sample (the sampler's own test takes
+      // the lower of the two as well: coverage_field.hpp).
+      for (std::size_t k = 0; k < run.vertices.size(); ++k) run_vertex[run.vertices[k]] = run.vertex_distance[k];
       for (std::size_t k = 0; k < run.faces.size(); ++k) {
         const Index f = run.faces[k];
         const VirtualSource& vs = run.face_sources[k];
-        for (Index j = begin[f]; j < begin[f + 1]; ++j)
-          if (by_face[j] != i)
-            q.min_distance = std::min(q.min_distance, vs.sigma + distance(samples[by_face[j]].position, vs.position));
+        const Triangle& t = mesh.triangles[f];
+        for (Index j = begin[f]; j < begin[f + 1]; ++j) {
+          if (by_face[j] == i) continue;
+          const Vec3 p = samples[by_face[j]].position;
+          double d = vs.sigma + distance(p, vs.position);
+          for (Index c : t) d = std::min(d, run_vertex[c] + distance(p, mesh.positions[c]));
+          q.min_distance = std::min(q.min_distance, d);
+        }
       }
+      for (Index v : run.vertices) run_vertex[v] = inf;
     }
     if (options.progress) options.progress(double(i + 1) / double(samples.size() + 1));
   }
