@@ -10,6 +10,7 @@ namespace gsp::sampling::detail {
 CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& referenced, double radius)
     : vertex_(referenced.size(), std::numeric_limits<double>::infinity()),
       run_vertex_(referenced.size(), std::numeric_limits<double>::infinity()),
+      round_(mesh),
       centroid_radius_(mesh.num_faces(), 0.0),
       head_(mesh.num_faces(), -1),
       sample_head_(mesh.num_faces(), -1),
@@ -26,17 +27,19 @@ CoverageField::CoverageField(const TriangleMesh& mesh, const std::vector<bool>& 
     for (Index v : t) centroid_radius_[f] = std::max(centroid_radius_[f], distance(c, mesh.positions[v]));
   }
   for (bool r : referenced) referenced_count_ += r;
-  vertex_face_begin_.assign(referenced.size() + 1, 0);
-  for (const Triangle& t : mesh.triangles)
-    for (Index v : t) ++vertex_face_begin_[v + 1];
-  for (std::size_t v = 0; v < referenced.size(); ++v) vertex_face_begin_[v + 1] += vertex_face_begin_[v];
-  vertex_faces_.resize(vertex_face_begin_.back());
-  std::vector<Index> fill(vertex_face_begin_.begin(), vertex_face_begin_.end() - 1);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
-    for (Index v : mesh.triangles[f]) vertex_faces_[fill[v]++] = Index(f);
   // A maximal Poisson set's discs cover the surface about three times: one entry per face each.
   pool_.reserve(3 * mesh.num_faces());
   uncovered_ = referenced_count_;
+}
+
+VertexFaces::VertexFaces(const TriangleMesh& mesh) : begin(mesh.num_vertices() + 1, 0) {
+  for (const Triangle& t : mesh.triangles)
+    for (Index v : t) ++begin[v + 1];
+  for (std::size_t v = 0; v < mesh.num_vertices(); ++v) begin[v + 1] += begin[v];
+  faces.resize(begin.back());
+  std::vector<Index> fill(begin.begin(), begin.end() - 1);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f)
+    for (Index v : mesh.triangles[f]) faces[fill[v]++] = Index(f);
 }
 
 bool CoverageField::clear_of_samples(const LocalField& run) const {
@@ -48,8 +51,8 @@ bool CoverageField::clear_of_samples(const LocalField& run) const {
   bool clear = true;
   for (std::size_t k = 0; k < run.vertices.size() && clear; ++k) {
     const Index v = run.vertices[k];
-    for (Index c = vertex_face_begin_[v]; c < vertex_face_begin_[v + 1] && clear; ++c) {
-      const Index f = vertex_faces_[c];
+    for (Index c = round_.begin[v]; c < round_.begin[v + 1] && clear; ++c) {
+      const Index f = round_.faces[c];
       for (std::int32_t e = sample_count_[f] <= kDense ? sample_head_[f] : -1; e >= 0 && clear; e = sample_next_[e])
         clear = !(corner_bound(f, sample_position_[e], run_vertex_) < radius_);
     }

@@ -18,6 +18,12 @@
 
 namespace gsp::sampling::detail {
 
+// The faces round each vertex (CSR: those of v are faces[begin[v] .. begin[v + 1])).
+struct VertexFaces {
+  std::vector<Index> begin, faces;
+  explicit VertexFaces(const TriangleMesh& mesh);
+};
+
 class CoverageField {
  public:
   // `referenced` marks the vertices used by a face; only those count as uncovered.
@@ -83,7 +89,7 @@ class CoverageField {
   // clear_of_samples' scratch: the run's vertex distances by vertex (+inf elsewhere), reset
   // after each run.
   mutable std::vector<double> run_vertex_;
-  std::vector<Index> vertex_face_begin_, vertex_faces_;   // the faces round each vertex
+  VertexFaces round_;
   std::vector<double> centroid_radius_;   // per face: largest centroid-to-corner distance
   std::vector<std::int32_t> head_;
   std::vector<Entry> pool_;

@@ -1,6 +1,8 @@
 // Quality figures: nearest-neighbour distances with propagations bounded by 2r, the
 // coverage radius with one propagation from all samples, and Lagae and Dutre's normalised
 // radius.
+#include "coverage_field.hpp"
+
 #include <gsp/errors.hpp>
 #include <gsp/sampling/quality.hpp>
 
@@ -48,6 +50,7 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
   go.want_face_sources = true;
   q.min_distance = bound;
   std::vector<double> coverage(mesh.num_vertices(), inf), run_vertex(mesh.num_vertices(), inf);
+  const detail::VertexFaces round(mesh);
   LocalWorkspace workspace = sampler.solver().make_workspace();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const Sample& s = samples[i];
@@ -56,22 +59,28 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
       coverage[run.vertices[k]] = std::min(coverage[run.vertices[k]], run.vertex_distance[k]);
     if (is_checked[i]) {
       ++q.samples_checked;
-      // The run's vertex values by vertex (put back below): a sample's distance is at most a
-      // corner's value plus the straight segment from it, and on a long sliver the face's one
-      // virtual source can be a bend far too long at the sample (the sampler's own test takes
-      // the lower of the two as well: coverage_field.hpp).
+      // A sample's distance is at most that of the run's virtual source in its face, and at
+      // most a corner's value plus the straight segment from it: on a long sliver the one
+      // virtual source can be a bend far too long at the sample, and a sliver whose source
+      // reads beyond the bound is not among the run's faces, so the faces round every vertex
+      // the run reached are read too (as the sampler's own test: coverage_field.hpp).
       for (std::size_t k = 0; k < run.vertices.size(); ++k) run_vertex[run.vertices[k]] = run.vertex_distance[k];
-      for (std::size_t k = 0; k < run.faces.size(); ++k) {
-        const Index f = run.faces[k];
-        const VirtualSource& vs = run.face_sources[k];
+      auto through_corners = [&](Index f) {
         const Triangle& t = mesh.triangles[f];
         for (Index j = begin[f]; j < begin[f + 1]; ++j) {
           if (by_face[j] == i) continue;
           const Vec3 p = samples[by_face[j]].position;
-          double d = vs.sigma + distance(p, vs.position);
-          for (Index c : t) d = std::min(d, run_vertex[c] + distance(p, mesh.positions[c]));
-          q.min_distance = std::min(q.min_distance, d);
+          for (Index c : t) q.min_distance = std::min(q.min_distance, run_vertex[c] + distance(p, mesh.positions[c]));
         }
+      };
+      for (Index v : run.vertices)
+        for (Index c = round.begin[v]; c < round.begin[v + 1]; ++c) through_corners(round.faces[c]);
+      for (std::size_t k = 0; k < run.faces.size(); ++k) {
+        const Index f = run.faces[k];
+        const VirtualSource& vs = run.face_sources[k];
+        for (Index j = begin[f]; j < begin[f + 1]; ++j)
+          if (by_face[j] != i)
+            q.min_distance = std::min(q.min_distance, vs.sigma + distance(samples[by_face[j]].position, vs.position));
       }
       for (Index v : run.vertices) run_vertex[v] = inf;
     }
