@@ -7,7 +7,9 @@ more than 1% below the straight line, none more than 1% above the shortest path 
 (meshes under 60k vertices), nothing left unreached that the edges reach. With --paths, also
 the default geodesic path from the source to the farthest vertex: between the straight line
 and the edge path, and within --path-slack of the field (docs/pathfinding.md, "Scale and
-winding", lists what that still finds). Prints the failures and a line per mesh
+winding", lists what that still finds). With --sampling, also gsp.sample(count=200): the count
+within 1%, every sample in a face of the mesh (a doubled face's copy once made it run without
+end: docs/apps/gsp-sample.md). Prints the failures and a line per mesh
 (docs/gsp-core.md, "Doubled faces", is what it found first).
 
     /usr/bin/python3 scripts/mutation_sweep.py ../shared/data/corpus ../shared/data/meshes
@@ -46,6 +48,23 @@ def edge_paths(V, F, s):
                 d[w] = dd + l
                 heapq.heappush(heap, (d[w], w))
     return d
+
+
+def check_sampling(V, F):
+    """'' when Poisson sampling by count holds, else what failed."""
+    try:
+        got = gsp.sample(V, F, count=200, seed=1)
+    except (gsp.Error, ValueError):
+        return ''
+    except Exception as e:  # noqa: BLE001
+        return f'sampling: untyped {type(e).__name__}: {e}'
+    n = len(got.points)
+    if abs(n - 200) > 2:
+        return f'sampling: {n} samples for a count of 200'
+    faces = np.asarray(got.faces)
+    if n and (faces.min() < 0 or faces.max() >= len(F)):
+        return 'sampling: a sample names a face that does not exist'
+    return ''
 
 
 def check(V, F, s, edge_limit, path_slack=None):
@@ -117,6 +136,7 @@ def main():
     ap.add_argument('--seed', type=int, default=7)
     ap.add_argument('--paths', action='store_true', help='also check the path to the farthest vertex')
     ap.add_argument('--path-slack', type=float, default=0.02, help='allowed path excess over the field (0.02: 2%%)')
+    ap.add_argument('--sampling', action='store_true', help='also sample by count (200) and check the count')
     a = ap.parse_args()
     rng = np.random.default_rng(a.seed)
     files = sorted(f for d in a.folders for f in glob.glob(os.path.join(d, '*'))
@@ -134,6 +154,8 @@ def main():
         bad = 0
         for name, V2, F2, s2 in mutations(V, F, s, rng):
             why = check(V2, F2, s2, a.edge_check_vertices, a.path_slack if a.paths else None)
+            if a.sampling:
+                why = '; '.join(w for w in (why, check_sampling(V2, F2)) if w)
             if why:
                 print(f'FAIL {os.path.basename(f)}, {name}: {why}', flush=True)
                 bad += 1
