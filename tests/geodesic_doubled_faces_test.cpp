@@ -53,6 +53,16 @@ TEST(DoubledFaces, AreFoundOnTheNonManifoldEdgesOnly) {
   const SurfacePoint in_copy = SurfacePoint::in_face(copy, {0.2, 0.3, 0.5});
   const SurfacePoint in_kept = SurfacePoint::in_face(kept, b);
   EXPECT_LT(distance(in_copy.position(d), in_kept.position(d)), 1e-15);
+  // The solver says the same per input face, whatever its memory layout (sampling reads it).
+  d.triangles.push_back({0, 0, 1});   // a face naming a vertex twice
+  const std::vector<bool> all = intrinsic::skipped_faces(d, build_connectivity(d));
+  for (bool layout : {false, true}) {
+    SolverOptions so;
+    so.optimize_layout = layout;
+    const GeodesicSolver solver(d, so);
+    for (std::size_t f = 0; f < d.num_faces(); ++f) EXPECT_EQ(solver.face_takes_part(Index(f)), !all[f]) << f;
+    EXPECT_FALSE(solver.face_takes_part(Index(d.num_faces())));
+  }
 }
 
 TEST(DoubledFaces, GiveTheFieldOfTheMeshWithoutThem) {

@@ -30,6 +30,9 @@ const SolverTimings& GeodesicSolver::timings() const { return impl_->timings; }
 std::size_t GeodesicSolver::intrinsic_flips() const { return impl_->flips; }
 std::size_t GeodesicSolver::window_corners() const { return impl_->window_corner_count; }
 std::size_t GeodesicSolver::duplicate_faces() const { return impl_->duplicate_faces; }
+bool GeodesicSolver::face_takes_part(Index face) const {
+  return face < impl_->mesh().num_faces() && !impl_->skipped_face[impl_->maps.face_to_layout(face)];
+}
 
 bool GeodesicSolver::needs_double() const {
   return (impl_->delaunay ? *impl_->delaunay : impl_->input).needs_double;

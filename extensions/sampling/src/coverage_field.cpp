@@ -54,7 +54,7 @@ bool CoverageField::clear_of_samples(const LocalField& run) const {
     for (Index c = round_.begin[v]; c < round_.begin[v + 1] && clear; ++c) {
       const Index f = round_.faces[c];
       for (std::int32_t e = sample_count_[f] <= kDense ? sample_head_[f] : -1; e >= 0 && clear; e = sample_next_[e])
-        clear = !(corner_bound(f, sample_position_[e], run_vertex_) < radius_);
+        clear = !(corner_bound(mesh_, f, sample_position_[e], run_vertex_) < radius_);
     }
   }
   for (std::size_t k = 0; k < run.faces.size() && clear; ++k) {

@@ -11,12 +11,22 @@
 
 #include <gsp/geodesics.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
 namespace gsp::sampling::detail {
+
+// min over the corners c of face f of d[c] + |p - c|: a path to p through a corner along the
+// straight segment inside the face (d: distances by vertex, +inf where unknown).
+inline double corner_bound(const TriangleMesh& mesh, Index face, Vec3 p, const std::vector<double>& d) {
+  double best = std::numeric_limits<double>::infinity();
+  for (Index v : mesh.triangles[face])
+    if (d[v] < best) best = std::min(best, d[v] + distance(p, mesh.positions[v]));
+  return best;
+}
 
 // The faces round each vertex (CSR: those of v are faces[begin[v] .. begin[v + 1])).
 struct VertexFaces {
@@ -48,7 +58,7 @@ class CoverageField {
   // (corner_bound): each is the length of a path, and on a long sliver the one virtual source
   // can be a bend that is right for one end and far too long at the other.
   double distance_at(Index face, Vec3 p) const {
-    double best = corner_bound(face, p, vertex_);
+    double best = corner_bound(mesh_, face, p, vertex_);
     auto take = [&](std::int32_t e) {
       const double d = pool_[e].sigma + distance(p, pool_[e].position);
       if (d < best) best = d;
@@ -70,15 +80,6 @@ class CoverageField {
     double sigma;
     std::int32_t next;
   };
-  // min over the corners c of face f of d[c] + |p - c|: a path to p through a corner along the
-  // straight segment inside the face.
-  double corner_bound(Index face, Vec3 p, const std::vector<double>& d) const {
-    const Triangle& t = mesh_.triangles[face];
-    double best = std::numeric_limits<double>::infinity();
-    for (Index v : t)
-      if (d[v] < best) best = std::min(best, d[v] + distance(p, mesh_.positions[v]));
-    return best;
-  }
   // A face can hold a point within r of the run's source.
   bool near(const LocalField& run, std::size_t k) const {
     return run.face_distance[k] - centroid_radius_[run.faces[k]] < radius_;

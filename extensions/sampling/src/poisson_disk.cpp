@@ -2,8 +2,6 @@
 #include "coverage_field.hpp"
 
 #include <gsp/available_memory.hpp>
-#include <gsp/connectivity.hpp>
-#include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/errors.hpp>
 #include <gsp/sampling/sampler.hpp>
 
@@ -17,16 +15,16 @@ namespace gsp::sampling {
 
 namespace {
 
-std::vector<bool> faces_taking_part(const TriangleMesh& mesh) {
-  std::vector<bool> part = intrinsic::skipped_faces(mesh, build_connectivity(mesh));
-  for (std::size_t f = 0; f < part.size(); ++f) part[f] = !part[f] && triangle_area(mesh, Index(f)) > 0;
+std::vector<bool> faces_taking_part(const TriangleMesh& mesh, const GeodesicSolver& solver) {
+  std::vector<bool> part(mesh.num_faces());
+  for (std::size_t f = 0; f < part.size(); ++f) part[f] = solver.face_takes_part(Index(f)) && triangle_area(mesh, Index(f)) > 0;
   return part;
 }
 
 }  // namespace
 
 Sampler::Sampler(const TriangleMesh& mesh, const SolverOptions& options)
-    : mesh_(mesh), solver_(mesh, options), taking_part_(faces_taking_part(mesh)), points_(mesh, taking_part_) {
+    : mesh_(mesh), solver_(mesh, options), taking_part_(faces_taking_part(mesh, solver_)), points_(mesh, taking_part_) {
   referenced_.assign(mesh.num_vertices(), false);
   vertex_face_.assign(mesh.num_vertices(), kInvalidIndex);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {

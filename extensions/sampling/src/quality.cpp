@@ -66,12 +66,9 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
       // the run reached are read too (as the sampler's own test: coverage_field.hpp).
       for (std::size_t k = 0; k < run.vertices.size(); ++k) run_vertex[run.vertices[k]] = run.vertex_distance[k];
       auto through_corners = [&](Index f) {
-        const Triangle& t = mesh.triangles[f];
-        for (Index j = begin[f]; j < begin[f + 1]; ++j) {
-          if (by_face[j] == i) continue;
-          const Vec3 p = samples[by_face[j]].position;
-          for (Index c : t) q.min_distance = std::min(q.min_distance, run_vertex[c] + distance(p, mesh.positions[c]));
-        }
+        for (Index j = begin[f]; j < begin[f + 1]; ++j)
+          if (by_face[j] != i)
+            q.min_distance = std::min(q.min_distance, detail::corner_bound(mesh, f, samples[by_face[j]].position, run_vertex));
       };
       for (Index v : run.vertices)
         for (Index c = round.begin[v]; c < round.begin[v + 1]; ++c) through_corners(round.faces[c]);

@@ -290,6 +290,10 @@ class GeodesicSolver {
   // Faces left out as copies of another face's three vertices (an STL's doubled triangles:
   // intrinsic::skip_duplicate_faces); their vertices get the values of the face kept.
   std::size_t duplicate_faces() const;
+  // Whether input face f takes part in the propagations: false for a face naming a vertex
+  // twice and for a doubled face's copy (gsp/intrinsic/edge_lengths.hpp). Sampling draws only
+  // on the faces that do: a point on a copy is never reached.
+  bool face_takes_part(Index face) const;
   std::size_t state_bytes(Precision precision) const;   // propagation state beyond the mesh
   // True where a face of the triangulation vertex-source queries run on is too thin for
   // single-precision lengths (Precision::automatic then runs in double).

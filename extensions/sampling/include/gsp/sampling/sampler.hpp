@@ -109,8 +109,8 @@ class Sampler {
 
   const TriangleMesh& mesh_;
   GeodesicSolver solver_;
-  // Faces that are part of the surface as the solver sees it (not a face naming a vertex twice,
-  // nor a doubled face's copy: gsp/intrinsic/edge_lengths.hpp), with a positive area. Darts
+  // Faces that are part of the surface as the solver sees it (GeodesicSolver::face_takes_part:
+  // not a face naming a vertex twice, nor a doubled face's copy), with a positive area. Darts
   // land on these only: the propagations never reach a copy, so a sample there was never seen
   // by the next candidate's test and darts on it were accepted without end.
   std::vector<bool> taking_part_;
