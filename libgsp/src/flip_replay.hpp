@@ -27,9 +27,23 @@ class FlipReplay {
   // (`flipped` gives them), >= 0 and summing to 1.
   std::pair<Index, std::array<double, 3>> locate(Index face, const Triangle& corners, const double w[3],
                                                  const std::vector<Triangle>& flipped) const;
+  // Where input face `face` (corners as before any flip: `corners`) lies on the flipped faces:
+  // the flipped face holding its point with weights `w`, and the face's own corners in that
+  // face's plane as weights on its corners (`flipped` gives their order), of any sign, summing
+  // to 1. Maps a point of that face's frame (a virtual source) back into the input face's plane.
+  struct Frame {
+    Index face;
+    double corner[3][3];   // input corner c = sum_i corner[c][i] * flipped corner i
+  };
+  Frame frame(Index face, const Triangle& corners, const double w[3], const std::vector<Triangle>& flipped) const;
+  // Whether a flip rewrote input face `face` (else it is a face of the flipped triangulation too).
+  bool rewritten(Index face) const { return begin_[face] != begin_[face + 1]; }
   std::size_t bytes() const;
 
  private:
+  // Follows `points` points of `face` (weights on `vert`) through the flips that rewrote it,
+  // point 0 choosing the face; returns the last face, `vert` and `weight` rewritten for it.
+  Index walk(Index face, Index vert[3], double (*weight)[3], int points) const;
   std::vector<FlipRecord> log_;
   std::vector<Index> begin_, flips_;   // per face: the flips that rewrote it, in order (CSR)
 };

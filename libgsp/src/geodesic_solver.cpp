@@ -54,9 +54,13 @@ GeodesicResult GeodesicSolver::compute(const std::vector<Source>& sources,
                                        const GeodesicOptions& options) const {
   detail::validate_options(options, detail::QueryKind::full, impl_->custom_lengths, impl_->mesh().num_vertices());
   detail::validate_sources(sources, impl_->mesh());
-  // The intrinsic Delaunay faces are not the input's: the per-face virtual sources need the
-  // input faces. A point given in an input face is found on them (query_seed.hpp).
-  const bool use_delaunay = impl_->delaunay && !options.want_face_sources;
+  // On the intrinsic Delaunay faces when there are any; a point given in an input face is
+  // found on them (query_seed.hpp). The per-face virtual sources are the input faces' own run,
+  // or fitted from the flipped faces' to the vertex values (GeodesicOptions::
+  // fitted_face_sources, fitted_face_sources.hpp); not for a targeted run, which stops before
+  // most vertices are final.
+  const bool fit_sources = options.want_face_sources && options.fitted_face_sources && options.targets.empty();
+  const bool use_delaunay = impl_->delaunay && (fit_sources || !options.want_face_sources);
   const Triangulation& tri = use_delaunay ? *impl_->delaunay : impl_->input;
   if (impl_->precision_on(tri, options.precision) == Precision::single) return impl_->run<float>(tri, sources, options);
   return impl_->run<double>(tri, sources, options);

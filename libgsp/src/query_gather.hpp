@@ -4,6 +4,7 @@
 // distances and labels with the vertex sources on top, per-face values and virtual sources
 // when asked for). A bounded query's gather, sparse over what it reached, is here too
 // (gather_reached, gather_local).
+#include "fitted_face_sources.hpp"
 #include "solver_impl.hpp"
 #include "source_edges.hpp"
 #include "virtual_source.hpp"
@@ -127,11 +128,16 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
       result.vertex_distance[in] = e.value;
       result.vertex_source[in] = e.label;
     }
+  // On the flipped triangulation the input faces' virtual sources are fitted to the vertex
+  // values from the flipped faces' records (fitted_face_sources.hpp); the face values then
+  // come from them.
+  const bool fitted = options.want_face_sources && &tri != &input;
+  if (fitted) fitted_face_sources<Real>(state, result, threads);
   if (options.want_face_distances) {
-    // On the flipped triangulation an input face's value comes from its corners' distances
-    // (before the cutoff, the vertex sources included), by layout index.
+    // Else on the flipped triangulation an input face's value comes from its corners'
+    // distances (before the cutoff, the vertex sources included), by layout index.
     std::vector<double> vdist;
-    if (&tri != &input) {
+    if (&tri != &input && !fitted) {
       vdist.resize(nv);
       for (std::size_t v = 0; v < nv; ++v) vdist[v] = double(vmin[v]) * mean_edge;
       for (const VertexSeed& vs : seeds)
@@ -146,6 +152,12 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
       if (&tri == &input) {
         const FaceRecord<Real>& st = state[fi];
         if (st.reached()) d = double(st.dT) * mean_edge, label = st.source();
+      } else if (fitted) {
+        const VirtualSource& vs = result.face_sources[in];
+        const Triangle& t = mesh().triangles[fi];
+        const Vec3 centroid = (1.0 / 3) * (mesh().positions[t[0]] + mesh().positions[t[1]] + mesh().positions[t[2]]);
+        const double at = vs.sigma + distance(centroid, vs.position);
+        if (vs.reached() && at <= cutoff) d = at, label = vs.source;
       } else {
         // The propagation ran on other faces: an input face gets the mean of its corners'
         // distances and the label of its nearest corner.
@@ -166,7 +178,7 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
       result.face_distance[copy] = result.face_distance[kept];
       result.face_source[copy] = result.face_source[kept];
     }
-  if (options.want_face_sources) {
+  if (options.want_face_sources && !fitted) {
     result.face_sources.resize(nf);
     for (std::size_t fi = 0; fi < nf; ++fi) {
       const FaceRecord<Real>& st = state[fi];

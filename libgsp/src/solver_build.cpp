@@ -101,6 +101,14 @@ const detail::FlipReplay& GeodesicSolver::Impl::flip_replay() const {
   return *replay;
 }
 
+const detail::FaceFrames& GeodesicSolver::Impl::face_frames() const {
+  std::call_once(frames_once, [&] {
+    frames = std::make_unique<detail::FaceFrames>(flip_replay(), mesh().triangles, delaunay->triangles(),
+                                                  delaunay->length, skipped_face);
+  });
+  return *frames;
+}
+
 void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   detail::IntrinsicTriangulation t = unflipped();
   flips = detail::make_intrinsic_delaunay(t, flip_cap());

@@ -3,6 +3,7 @@
 // to libgsp. geodesic_solver.cpp builds it and runs full queries, local_query.cpp runs the
 // bounded ones; query_seed.hpp and query_propagate.hpp hold the seeding and propagation both use.
 #include "corner_values.hpp"
+#include "face_frames.hpp"
 #include "flip_replay.hpp"
 #include "goal_directed.hpp"
 #include "index_maps.hpp"
@@ -181,6 +182,12 @@ struct GeodesicSolver::Impl {
   mutable std::once_flag replay_once;
   mutable std::unique_ptr<detail::FlipReplay> replay;
   const detail::FlipReplay& flip_replay() const;
+  // With `delaunay`: where each input face lies on it (face_frames.hpp); made by face_frames()
+  // at the first query that asks for fitted per-face sources (up to four 56-byte frames per
+  // face a flip rewrote).
+  mutable std::once_flag frames_once;
+  mutable std::unique_ptr<detail::FaceFrames> frames;
+  const detail::FaceFrames& face_frames() const;
   std::size_t flips = 0;
   std::vector<bool> skipped_face;  // faces that repeat a vertex or copy another: not part of the propagation
   std::size_t duplicate_faces = 0;  // of them, copies (intrinsic::skip_duplicate_faces)
@@ -280,6 +287,11 @@ struct GeodesicSolver::Impl {
   void gather(const Triangulation& tri, const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
               bool relax, const GeodesicOptions& options, const std::vector<Real>& vmin, std::vector<Index>& vlabel,
               GeodesicResult& result, unsigned threads = 1) const;
+  // After a run on the intrinsic Delaunay faces: each input face's virtual source fitted to
+  // its corners' values (fitted_face_sources.hpp); result.vertex_distance / vertex_source
+  // must be filled.
+  template <class Real>
+  void fitted_face_sources(const FaceRecord<Real>* state, GeodesicResult& result, unsigned threads) const;
 
   // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): seeds the
   // faces of the sources (checked before: validate_sources.hpp); vertex sources also give

@@ -2,6 +2,7 @@
 
 #include <gsp/geodesics.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace gsp::detail {
@@ -19,6 +20,42 @@ Vec3 canonical_to_3d(const TriangleMesh& mesh, Index f, double x, double y) {
   const double ly = norm(ey);
   ey = ly > 0 ? (1.0 / ly) * ey : Vec3{0, 0, 0};   // zero-area face: y is meaningless
   return p0 + x * ex + y * ey;
+}
+
+bool unfolded_to_3d(const Vec3 corners3d[3], const double corners2d[3][2], double x, double y, Vec3& out) {
+  const double ux = corners2d[1][0] - corners2d[0][0], uy = corners2d[1][1] - corners2d[0][1];
+  const double vx = corners2d[2][0] - corners2d[0][0], vy = corners2d[2][1] - corners2d[0][1];
+  const double area = ux * vy - uy * vx;
+  const double scale = std::max({ux * ux + uy * uy, vx * vx + vy * vy, (ux - vx) * (ux - vx) + (uy - vy) * (uy - vy)});
+  if (!(std::abs(area) > 1e-12 * scale)) return false;
+  const double px = x - corners2d[0][0], py = y - corners2d[0][1];
+  const double b1 = (px * vy - py * vx) / area, b2 = (ux * py - uy * px) / area;
+  // Affine in the face's plane: the same weights on the 3D corners.
+  out = corners3d[0] + b1 * (corners3d[1] - corners3d[0]) + b2 * (corners3d[2] - corners3d[0]);
+  return true;
+}
+
+void across_edge(const double mine[3][2], int from, int to, const double theirs[3][2], int their_from, int their_to,
+                 double x, double y, double out[2]) {
+  // Each frame's edge as an origin, a unit direction u and its normal n; a point's (along,
+  // across) coordinates carry over, `across` negated when both third corners lie on the same
+  // side (the neighbour must fold out to the other side).
+  struct Axis {
+    double ox, oy, ux, uy;
+    double along(double px, double py) const { return (px - ox) * ux + (py - oy) * uy; }
+    double across(double px, double py) const { return -(px - ox) * uy + (py - oy) * ux; }
+  };
+  auto axis = [](const double p[3][2], int a, int b) {
+    const double dx = p[b][0] - p[a][0], dy = p[b][1] - p[a][1], l = std::sqrt(dx * dx + dy * dy);
+    return l > 0 ? Axis{p[a][0], p[a][1], dx / l, dy / l} : Axis{p[a][0], p[a][1], 1, 0};
+  };
+  const Axis m = axis(mine, from, to), t = axis(theirs, their_from, their_to);
+  const int my_third = 3 - from - to, their_third = 3 - their_from - their_to;
+  const bool same_side = (m.across(mine[my_third][0], mine[my_third][1]) > 0) ==
+                         (t.across(theirs[their_third][0], theirs[their_third][1]) > 0);
+  const double a = t.along(x, y), c = same_side ? -t.across(x, y) : t.across(x, y);
+  out[0] = m.ox + a * m.ux - c * m.uy;
+  out[1] = m.oy + a * m.uy + c * m.ux;
 }
 
 }  // namespace gsp::detail

@@ -8,4 +8,16 @@ namespace gsp::detail {
 // x towards corner 1, y towards corner 2. (x, y) in model units.
 Vec3 canonical_to_3d(const TriangleMesh& mesh, Index f, double x, double y);
 
+// A point of another face's frame carried into face `corners3d`'s plane: `corners2d` are that
+// face's corners in the other frame (an isometric unfolding), (x, y) the point there. False
+// where the corners span no area (a degenerate face: no plane to place the point in).
+bool unfolded_to_3d(const Vec3 corners3d[3], const double corners2d[3][2], double x, double y, Vec3& out);
+
+// A point of a neighbour's frame in this face's frame, unfolded across their shared edge: the
+// edge runs from this face's corner `from` (its position: mine[from]) to corner `to`, and the
+// same vertices are the neighbour's corners `their_from` and `their_to`; the neighbour's third
+// corner lands on the other side of the edge. (x, y) in the neighbour's frame; out in mine.
+void across_edge(const double mine[3][2], int from, int to, const double theirs[3][2], int their_from, int their_to,
+                 double x, double y, double out[2]);
+
 }  // namespace gsp::detail
