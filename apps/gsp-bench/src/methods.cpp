@@ -24,6 +24,8 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::gsp_random_layout, "gsp-random-layout", "GSP on a randomly shuffled mesh, layout optimisation off", true},
       {Method::gsp_no_layout, "gsp-no-layout", "GSP on the file's order, layout optimisation off", true},
       {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
+      {Method::gsp_face_sources, "gsp-face-sources", "GSP's per-face virtual sources (the input faces' run: what paths and CVT read) at the faces' corners, per vertex the mean over its faces", false},
+      {Method::gsp_fitted_sources, "gsp-fitted-sources", "the same for the fitted per-face sources (fitted_face_sources: what Python's distance_at reads)", false},
       {Method::gsp_no_relax, "gsp-no-relax", "GSP without the vertex relaxation (per-face virtual sources alone)", false},
       {Method::gsp_no_line_test, "gsp-no-line-test", "GSP without the update step's straight-line test (rule 8; the final bound kept)", false},
       {Method::gsp_no_windows, "gsp-no-windows", "GSP without the carried windows (rule 10)", false},
@@ -102,6 +104,39 @@ class GspRunner : public Runner {
   bool threaded() const override { return options_.threads != 1; }
 
  private:
+  GeodesicSolver solver_;
+  GeodesicOptions options_;
+};
+
+// What the face sources give (GeodesicOptions::want_face_sources): each face's sigma + |x - S|
+// at its corners x, per vertex the mean over its reached faces (a vertex of no reached face
+// keeps the solver's value).
+class FaceSourceRunner : public Runner {
+ public:
+  FaceSourceRunner(const TriangleMesh& mesh, bool fitted) : mesh_(mesh), solver_(mesh) {
+    options_.threads = 1;
+    options_.want_face_distances = false;
+    options_.want_face_sources = true;
+    options_.fitted_face_sources = fitted;
+  }
+  Outcome run(Index source) override {
+    GeodesicResult r = solver_.compute({Source::at_vertex(source)}, options_);
+    std::vector<double> sum(mesh_.num_vertices(), 0);
+    std::vector<int> count(mesh_.num_vertices(), 0);
+    for (std::size_t f = 0; f < mesh_.num_faces(); ++f) {
+      const VirtualSource& s = r.face_sources[f];
+      if (!s.reached()) continue;
+      for (Index v : mesh_.triangles[f]) sum[v] += s.sigma + distance(mesh_.positions[v], s.position), ++count[v];
+    }
+    for (std::size_t v = 0; v < sum.size(); ++v)
+      if (count[v] > 0) r.vertex_distance[v] = sum[v] / count[v];
+    return {std::move(r.vertex_distance), r.stats, true};
+  }
+  std::size_t state_bytes() const override { return solver_.state_bytes(options_.precision); }
+  std::size_t intrinsic_flips() const override { return solver_.intrinsic_flips(); }
+
+ private:
+  const TriangleMesh& mesh_;
   GeodesicSolver solver_;
   GeodesicOptions options_;
 };
@@ -222,6 +257,8 @@ std::unique_ptr<Runner> make_runner(Method method, const TriangleMesh& mesh, std
     case Method::gsp_double: go.precision = Precision::double_precision; break;
     case Method::gsp_no_layout: so.optimize_layout = false; break;
     case Method::gsp_input_faces: so.intrinsic_delaunay = false; break;
+    case Method::gsp_face_sources: return std::make_unique<FaceSourceRunner>(mesh, false);
+    case Method::gsp_fitted_sources: return std::make_unique<FaceSourceRunner>(mesh, true);
     case Method::gsp_no_relax: go.vertex_relaxation = false; break;
     case Method::gsp_no_line: go.straight_line_bound = false; break;
     case Method::gsp_no_line_test: go.straight_line_test = false; break;

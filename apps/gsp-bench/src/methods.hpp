@@ -23,6 +23,8 @@ enum class Method {
   gsp_random_layout,   // the mesh shuffled in memory, no layout optimisation
   gsp_no_layout,       // the mesh in file order, no layout optimisation
   gsp_input_faces,     // on the input triangles instead of their intrinsic Delaunay flip
+  gsp_face_sources,    // the per-face virtual sources (want_face_sources) read at each face's corners
+  gsp_fitted_sources,  // ... fitted ones (GeodesicOptions::fitted_face_sources)
   gsp_no_relax,        // without the vertex relaxation (per-face virtual sources alone, the paper's)
   gsp_no_line_test,    // without the update step's straight-line test (rule 8)
   gsp_no_windows,      // without the carried windows (rule 10)
