@@ -110,21 +110,18 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
         // A face whose corners are nearest to different sources is cut by their bisector: no one
         // source fits it, and a search would trade one corner's error for another's.
         if (!one_label) continue;
-        double cg[3][2];
-        detail::canonical_corners(tri.length, g, 1.0, cg);
-        for (int i = 0; i < 3; ++i) {
+        for (Index i = 0; i < 3; ++i) {
           const Index from = flipped[g][i], to = flipped[g][(i + 1) % 3];
           for (Index h = tri.ring[3 * g + i] & detail::kRingIndexMask; face_of(h) != g;
                h = tri.ring[h] & detail::kRingIndexMask) {
-            const Index n = face_of(h);
+            const Index n = face_of(h), j = corner_of(h);
             const Triangle& tn = flipped[n];
-            const int their_from = int(std::find(tn.begin(), tn.end(), from) - tn.begin());
-            const int their_to = int(std::find(tn.begin(), tn.end(), to) - tn.begin());
-            if (their_from == 3 || their_to == 3 || !state[n].reached()) continue;
-            double cn[3][2], s[2];
-            detail::canonical_corners(tri.length, n, 1.0, cn);
-            detail::across_edge(cg, i, (i + 1) % 3, cn, their_from, their_to, double(state[n].sx) * mean_edge,
-                                double(state[n].sy) * mean_edge, s);
+            const bool same_dir = tn[j] == from;
+            if (!(same_dir ? tn[(j + 1) % 3] == to : tn[j] == to && tn[(j + 1) % 3] == from)) continue;
+            if (!state[n].reached()) continue;
+            double s[2];
+            detail::across_edge(&tri.length[3 * g], i, &tri.length[3 * n], j, same_dir,
+                                double(state[n].sx) * mean_edge, double(state[n].sy) * mean_edge, s);
             consider(state[n], fr->at, s[0], s[1]);
           }
         }

@@ -1,6 +1,7 @@
 #include "virtual_source.hpp"
 
 #include <gsp/geodesics.hpp>
+#include <gsp/intrinsic/face_frame.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -35,27 +36,17 @@ bool unfolded_to_3d(const Vec3 corners3d[3], const double corners2d[3][2], doubl
   return true;
 }
 
-void across_edge(const double mine[3][2], int from, int to, const double theirs[3][2], int their_from, int their_to,
-                 double x, double y, double out[2]) {
-  // Each frame's edge as an origin, a unit direction u and its normal n; a point's (along,
-  // across) coordinates carry over, `across` negated when both third corners lie on the same
-  // side (the neighbour must fold out to the other side).
-  struct Axis {
-    double ox, oy, ux, uy;
-    double along(double px, double py) const { return (px - ox) * ux + (py - oy) * uy; }
-    double across(double px, double py) const { return -(px - ox) * uy + (py - oy) * ux; }
-  };
-  auto axis = [](const double p[3][2], int a, int b) {
-    const double dx = p[b][0] - p[a][0], dy = p[b][1] - p[a][1], l = std::sqrt(dx * dx + dy * dy);
-    return l > 0 ? Axis{p[a][0], p[a][1], dx / l, dy / l} : Axis{p[a][0], p[a][1], 1, 0};
-  };
-  const Axis m = axis(mine, from, to), t = axis(theirs, their_from, their_to);
-  const int my_third = 3 - from - to, their_third = 3 - their_from - their_to;
-  const bool same_side = (m.across(mine[my_third][0], mine[my_third][1]) > 0) ==
-                         (t.across(theirs[their_third][0], theirs[their_third][1]) > 0);
-  const double a = t.along(x, y), c = same_side ? -t.across(x, y) : t.across(x, y);
-  out[0] = m.ox + a * m.ux - c * m.uy;
-  out[1] = m.oy + a * m.uy + c * m.ux;
+void across_edge(const double mine[3], Index i, const double theirs[3], Index j, bool same_dir, double x, double y,
+                 double out[2]) {
+  // Into the neighbour's edge frame (its face on +y), over the edge (y flips; x runs from the
+  // other end unless both walk the edge the same way), out of this face's edge frame: as the
+  // update step unfolds a source (update_step.hpp, unfold).
+  using intrinsic::canonical_frame;
+  using intrinsic::edge_view;
+  const intrinsic::EdgeView<double> vt = edge_view(theirs, j), vm = edge_view(mine, i);
+  double ex, ey;
+  canonical_frame(theirs, j, vt).to_edge(x, y, ex, ey);
+  canonical_frame(mine, i, vm).to_canonical(same_dir ? ex : vm.e1 - ex, -ey, out[0], out[1]);
 }
 
 }  // namespace gsp::detail

@@ -13,11 +13,11 @@ Vec3 canonical_to_3d(const TriangleMesh& mesh, Index f, double x, double y);
 // where the corners span no area (a degenerate face: no plane to place the point in).
 bool unfolded_to_3d(const Vec3 corners3d[3], const double corners2d[3][2], double x, double y, Vec3& out);
 
-// A point of a neighbour's frame in this face's frame, unfolded across their shared edge: the
-// edge runs from this face's corner `from` (its position: mine[from]) to corner `to`, and the
-// same vertices are the neighbour's corners `their_from` and `their_to`; the neighbour's third
-// corner lands on the other side of the edge. (x, y) in the neighbour's frame; out in mine.
-void across_edge(const double mine[3][2], int from, int to, const double theirs[3][2], int their_from, int their_to,
-                 double x, double y, double out[2]);
+// A point (x, y) of a neighbour's canonical frame in this face's, unfolded across their shared
+// edge with the propagation's own frames (gsp/intrinsic/face_frame.hpp): this face's halfedge
+// at corner i and the neighbour's at corner j lie on one edge; same_dir when both start at the
+// same vertex (the faces disagree in orientation). `mine`, `theirs`: the faces' three lengths.
+void across_edge(const double mine[3], Index i, const double theirs[3], Index j, bool same_dir, double x, double y,
+                 double out[2]);
 
 }  // namespace gsp::detail
