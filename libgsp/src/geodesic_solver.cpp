@@ -116,7 +116,7 @@ GeodesicResult GeodesicSolver::Impl::run(const Triangulation& tri, const std::ve
   if (options.straight_line_bound && line_scale > 0)
     result.stats.raised_to_line = detail::raise_to_straight_line<Real>(
         nv, nullptr, line_bound_positions(), vmin.data(), vlabel.data(), mean_edge, true, points, threads);
-  gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads);
+  gather<Real>(tri, state.data(), vertex_seeds, relax, options, vmin, vlabel, result, threads, &points);
   return_state(std::move(state));
   return result;
 }

@@ -90,7 +90,8 @@ template <class Real>
 void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Real>* state,
                                   const std::vector<VertexSeed>& vertex_seeds, bool relax,
                                   const GeodesicOptions& options, const std::vector<Real>& vmin,
-                                  std::vector<Index>& vlabel, GeodesicResult& result, unsigned threads) const {
+                                  std::vector<Index>& vlabel, GeodesicResult& result, unsigned threads,
+                                  const std::vector<detail::SourcePoint>* points) const {
   const std::size_t nf = mesh().num_faces(), nv = mesh().num_vertices();
   // A vertex source's own value is exact and wins ties against the faces (vertex_seeds: one
   // per vertex, as seed() left them).
@@ -132,7 +133,7 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
   // values from the flipped faces' records (fitted_face_sources.hpp); the face values then
   // come from them.
   const bool fitted = options.want_face_sources && &tri != &input;
-  if (fitted) fitted_face_sources<Real>(state, result, threads);
+  if (fitted) fitted_face_sources<Real>(state, result, threads, points ? *points : std::vector<detail::SourcePoint>{});
   if (options.want_face_distances) {
     // Else on the flipped triangulation an input face's value comes from its corners'
     // distances (before the cutoff, the vertex sources included), by layout index.

@@ -286,12 +286,15 @@ struct GeodesicSolver::Impl {
   template <class Real>
   void gather(const Triangulation& tri, const FaceRecord<Real>* state, const std::vector<VertexSeed>& vertex_seeds,
               bool relax, const GeodesicOptions& options, const std::vector<Real>& vmin, std::vector<Index>& vlabel,
-              GeodesicResult& result, unsigned threads = 1) const;
+              GeodesicResult& result, unsigned threads = 1,
+              const std::vector<detail::SourcePoint>* points = nullptr) const;
   // After a run on the intrinsic Delaunay faces: each input face's virtual source fitted to
   // its corners' values (fitted_face_sources.hpp); result.vertex_distance / vertex_source
-  // must be filled.
+  // must be filled. `points`: the sources in 3D (source_points_for), for the straight-line
+  // bound; none (empty) leaves it out.
   template <class Real>
-  void fitted_face_sources(const FaceRecord<Real>* state, GeodesicResult& result, unsigned threads) const;
+  void fitted_face_sources(const FaceRecord<Real>* state, GeodesicResult& result, unsigned threads,
+                           const std::vector<detail::SourcePoint>& points) const;
 
   // The steps every query shares (query_seed.hpp, query_propagate.hpp). seed(): seeds the
   // faces of the sources (checked before: validate_sources.hpp); vertex sources also give
