@@ -1,6 +1,6 @@
 // The per-face virtual sources (want_face_sources): the input faces' own run by default (what
 // paths walk back on and CVT partitions), or fitted from the intrinsic Delaunay run to the
-// vertex values (fitted_face_sources: what Python's distance_at reads; query_gather.hpp,
+// vertex values (fitted_face_sources, an option no extension uses yet; query_gather.hpp,
 // fitted_face_sources), against CGAL's exact geodesics on a CAD plate whose flat faces are
 // fans of slivers.
 #include "helpers/geodesic_fixtures.hpp"
