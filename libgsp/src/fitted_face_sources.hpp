@@ -35,11 +35,6 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
   // the search ran on 80% of a benign scan's faces at 1e-5).
   constexpr double kFits = 1e-3;
   constexpr double kLineSlack = 1e-5;   // the records' float rounding
-  // Below the straight line a reading costs ten times its shortfall: rejecting such sources
-  // outright left faces with none but a pseudo-source at a corner (a CAD plate's readings 2 ->
-  // 6% MRE); at ten, over the corpus, files with readings more than 1% below the line 28 -> 6
-  // (worst 56 -> 16%) for MRE 1.3118 -> 1.3236% (malign). Not removed: docs/gsp-core.md.
-  constexpr double kBelowLine = 10;
   // The vertices' values and labels in memory order.
   std::vector<double> vdist(mesh().num_vertices());
   std::vector<Index> vlab(mesh().num_vertices());
@@ -74,6 +69,9 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
         }
       }
       const Vec3 corners3d[3] = {mesh().positions[t[0]], mesh().positions[t[1]], mesh().positions[t[2]]};
+      const Vec3 check[7] = {corners3d[0], corners3d[1], corners3d[2],
+                             (corners3d[0] + corners3d[1]) * 0.5, (corners3d[1] + corners3d[2]) * 0.5,
+                             (corners3d[2] + corners3d[0]) * 0.5, (corners3d[0] + corners3d[1] + corners3d[2]) * (1.0 / 3)};
       double best_misfit = std::numeric_limits<double>::infinity();
       // The face's label is the propagation's at its centroid (its own record, or the flipped
       // face holding its centroid: the first candidate considered sets it). Only sources of
@@ -88,18 +86,25 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
         if (label == kInvalidIndex) label = st.source();
         Vec3 s;
         if (st.source() != label || !detail::unfolded_to_3d(corners3d, at, sx, sy, s)) return;
-        const double sigma = double(st.sigma) * mean_edge;
-        double misfit = 0;
-        for (int i = 0; i < 3; ++i) {
-          if (!std::isfinite(d[i])) continue;
-          const double reading = sigma + distance(corners3d[i], s);
-          if (label < points.size()) {   // a reading below the straight line weighs ten times
-            const detail::SourcePoint& p = points[label];
-            const double line = p.offset + distance(corners3d[i], p.position);
-            if (reading < line * (1 - kLineSlack)) misfit += kBelowLine * (line - reading);
+        double sigma = double(st.sigma) * mean_edge;
+        double reading[3];
+        for (int i = 0; i < 3; ++i) reading[i] = sigma + distance(corners3d[i], s);
+        if (label < points.size()) {
+          // Below the straight line from the source at a corner, the face's midpoints or its
+          // centroid: the candidate's path length behind its source rises until it reads the
+          // line there (a longer path, still one on the surface).
+          const detail::SourcePoint& p = points[label];
+          double raise = 0;
+          for (const Vec3& x : check) {
+            const double line = p.offset + distance(x, p.position), r = sigma + distance(x, s);
+            if (r < line * (1 - kLineSlack)) raise = std::max(raise, line - r);
           }
-          misfit += reading - d[i] > 0 ? reading - d[i] : d[i] - reading;
+          sigma += raise;
+          for (double& r : reading) r += raise;
         }
+        double misfit = 0;
+        for (int i = 0; i < 3; ++i)
+          if (std::isfinite(d[i])) misfit += reading[i] - d[i] > 0 ? reading[i] - d[i] : d[i] - reading[i];
         if (!(misfit < best_misfit)) return;
         best_misfit = misfit, vs.position = s, vs.sigma = sigma, vs.source = st.source();
       };

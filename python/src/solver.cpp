@@ -71,6 +71,7 @@ py::array_t<double> distance_matrix(Solver& s, const py::handle& points, const p
   GeodesicOptions o = query_options(max_distance, strategy, threads, precision, relax);
   o.want_face_distances = false;
   o.want_face_sources = std::any_of(cols.begin(), cols.end(), [](const Source& t) { return t.kind != Source::Kind::vertex; });
+  o.fitted_face_sources = o.want_face_sources;
   if (o.want_face_sources) s.require_3d("distances at surface points");
   const unsigned workers = resolve_threads(threads, rows.size());
   o.threads = 1;   // one query per worker
@@ -158,6 +159,7 @@ std::shared_ptr<const GeodesicResult> Solver::field_with_sources(const std::vect
     if (field_ && same_sources(want_sources, field_sources_) && same_query(want, field_options_)) return field_;
   }
   want.want_face_sources = true;
+  want.fitted_face_sources = true;   // readings, no walk: the sources closest to the vertex values
   want.want_face_distances = false;
   auto field = std::make_shared<const GeodesicResult>(compute(want_sources, want));
   std::lock_guard<std::mutex> lock(memo_mutex_);
@@ -272,7 +274,9 @@ the shortest edge path).)");
 
 Evaluates the field of `sources` (same keywords as distance()), or, without sources, the field
 of this solver's last distance() call, through each face's virtual source: exact inside a face
-for what the face's source explains, unlike interpolating vertex values.)");
+for what the face's source explains, unlike interpolating vertex values. The sources are fitted
+to distance()'s vertex values from the run on the intrinsic Delaunay faces, and never read below
+the straight line from the source.)");
   cls.def("distance_matrix", &distance_matrix, py::arg("points"), py::kw_only(), py::arg("targets") = py::none(),
           py::arg("max_distance") = std::numeric_limits<double>::infinity(), py::arg("strategy") = "speed_limiter",
           py::arg("threads") = 0u, py::arg("precision") = "auto", py::arg("relax") = true,
