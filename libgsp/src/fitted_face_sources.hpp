@@ -8,6 +8,8 @@
 #include "solver_impl.hpp"
 #include "virtual_source.hpp"
 
+#include <gsp/closest_point.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,6 +56,44 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
       const detail::FaceFrame* first = frames_of.begin(Index(fi));
       const detail::FaceFrame* last = frames_of.end(Index(fi));
       const FaceRecord<Real>& own_record = state[fi];
+      const Vec3 corners3d[3] = {mesh().positions[t[0]], mesh().positions[t[1]], mesh().positions[t[2]]};
+      // How much longer the path behind a source at s (3D, in the face's plane) must be for it to
+      // read at or above the straight line from its source p everywhere on the face. The
+      // shortfall f(x) = |x - p| + offset - (sigma + |x - s|) peaks, over the face, at a corner,
+      // at s when s lies inside, or on an edge where the two distances change alike: in the
+      // plane f has no other critical point (its gradient is a unit vector less one shorter,
+      // p lying off the plane; p in the plane: f is constant along the ray from p through s,
+      // which leaves the face across an edge), and along an edge (t, with s at distance b from
+      // its line and foot a, p at d and c) (t - a) d = +-(t - c) b.
+      auto shortfall = [&](const Vec3& s, double sigma, Index source) {
+        if (source >= points.size() || line_scale != 1) return 0.0;   // no 3D line to keep
+        const detail::SourcePoint& p = points[source];
+        // |x - p| <= |x - s| + |s - p|: a path behind s at least the straight line to s reads
+        // at or above the line everywhere (bends at a vertex, and most carried sources).
+        if (sigma >= p.offset + distance(s, p.position)) return 0.0;
+        double raise = 0;
+        auto test = [&](const Vec3& x) {
+          const double line = p.offset + distance(x, p.position), r = sigma + distance(x, s);
+          if (r < line * (1 - kLineSlack)) raise = std::max(raise, line - r);
+        };
+        for (int i = 0; i < 3; ++i) {
+          const Vec3 o = corners3d[i], e = corners3d[(i + 1) % 3] - o;
+          test(o);
+          const double len = norm(e);
+          if (!(len > 0)) continue;
+          const Vec3 u = e * (1 / len);
+          const double fa = dot(s - o, u), fb = norm(s - o - u * fa);
+          const double fc = dot(p.position - o, u), fd = norm(p.position - o - u * fc);
+          for (const double den : {fd + fb, fd - fb}) {
+            if (!(std::abs(den) > 1e-12 * len)) continue;
+            const double t = (fa * fd + (den == fd + fb ? fc * fb : -fc * fb)) / den;
+            if (std::isfinite(t)) test(o + u * std::clamp(t, 0.0, len));
+          }
+        }
+        const std::array<double, 3> w = closest_point_on_triangle(s, corners3d[0], corners3d[1], corners3d[2]);
+        test(corners3d[0] * w[0] + corners3d[1] * w[1] + corners3d[2] * w[2]);
+        return raise;
+      };
       if (first == last && flipped[fi] == t && own_record.reached()) {
         // Most faces: no flip rewrote them and their own source fits their corners (checked in
         // the record's frame, as the propagation reads it).
@@ -65,13 +105,10 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
                                                 double(own_record.sy) * mean_edge);
           vs.sigma = double(own_record.sigma) * mean_edge;
           vs.source = own_record.source();
-          continue;
+          if (shortfall(vs.position, vs.sigma, vs.source) == 0) continue;
+          vs = VirtualSource{};   // below the line inside: searched like the others
         }
       }
-      const Vec3 corners3d[3] = {mesh().positions[t[0]], mesh().positions[t[1]], mesh().positions[t[2]]};
-      const Vec3 check[7] = {corners3d[0], corners3d[1], corners3d[2],
-                             (corners3d[0] + corners3d[1]) * 0.5, (corners3d[1] + corners3d[2]) * 0.5,
-                             (corners3d[2] + corners3d[0]) * 0.5, (corners3d[0] + corners3d[1] + corners3d[2]) * (1.0 / 3)};
       double best_misfit = std::numeric_limits<double>::infinity();
       // The face's label is the propagation's at its centroid (its own record, or the flipped
       // face holding its centroid: the first candidate considered sets it). Only sources of
@@ -80,7 +117,7 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
       Index label = kInvalidIndex;
       // A candidate is judged by what it reads at the corners in 3D (a sliver's frame through
       // the flips and its 3D shape agree only up to rounding, which a far source magnifies),
-      // and below the straight line from its source only at a cost (kBelowLine).
+      // after the raise that keeps it at or above the straight line (shortfall).
       auto consider = [&](const FaceRecord<Real>& st, const double at[3][2], double sx, double sy) {
         if (!st.reached()) return;
         if (label == kInvalidIndex) label = st.source();
@@ -89,19 +126,12 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
         double sigma = double(st.sigma) * mean_edge;
         double reading[3];
         for (int i = 0; i < 3; ++i) reading[i] = sigma + distance(corners3d[i], s);
-        if (label < points.size()) {
-          // Below the straight line from the source at a corner, the face's midpoints or its
-          // centroid: the candidate's path length behind its source rises until it reads the
-          // line there (a longer path, still one on the surface).
-          const detail::SourcePoint& p = points[label];
-          double raise = 0;
-          for (const Vec3& x : check) {
-            const double line = p.offset + distance(x, p.position), r = sigma + distance(x, s);
-            if (r < line * (1 - kLineSlack)) raise = std::max(raise, line - r);
-          }
-          sigma += raise;
-          for (double& r : reading) r += raise;
-        }
+        // Below the straight line from the source at a check point: the candidate's path length
+        // behind its source rises until it reads the line there (a longer path, still one on
+        // the surface).
+        const double raise = shortfall(s, sigma, label);
+        sigma += raise;
+        for (double& r : reading) r += raise;
         double misfit = 0;
         for (int i = 0; i < 3; ++i)
           if (std::isfinite(d[i])) misfit += reading[i] - d[i] > 0 ? reading[i] - d[i] : d[i] - reading[i];

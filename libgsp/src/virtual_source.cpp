@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gsp::detail {
 
@@ -55,10 +56,19 @@ namespace gsp {
 
 double GeodesicResult::distance_at(const TriangleMesh& mesh, Index face,
                                    std::array<double, 3> bary) const {
-  if (face >= face_sources.size() || !face_sources[face].reached())
-    return std::numeric_limits<double>::infinity();
+  if (face >= face_sources.size()) return std::numeric_limits<double>::infinity();
   const Vec3 q = SurfacePoint::in_face(face, bary).position(mesh);
-  return face_sources[face].sigma + distance(q, face_sources[face].position);
+  const VirtualSource& vs = face_sources[face];
+  const double through_source = vs.reached() ? vs.sigma + distance(q, vs.position) : std::numeric_limits<double>::infinity();
+  if (vertex_distance.size() != mesh.num_vertices()) return through_source;
+  return std::min(through_source, corner_paths(mesh, face, q, vertex_distance));
+}
+
+double corner_paths(const TriangleMesh& mesh, Index face, Vec3 p, const std::vector<double>& d) {
+  double best = std::numeric_limits<double>::infinity();
+  for (Index v : mesh.triangles[face])
+    if (d[v] < best) best = std::min(best, d[v] + distance(p, mesh.positions[v]));
+  return best;
 }
 
 }  // namespace gsp

@@ -25,7 +25,7 @@ const std::vector<MethodInfo>& all_methods() {
       {Method::gsp_no_layout, "gsp-no-layout", "GSP on the file's order, layout optimisation off", true},
       {Method::gsp_input_faces, "gsp-input-faces", "GSP on the input triangles (no intrinsic Delaunay flips)", false},
       {Method::gsp_face_sources, "gsp-face-sources", "GSP's per-face virtual sources (the input faces' run: what paths and CVT read) at the faces' corners, per vertex the mean over its faces", false},
-      {Method::gsp_fitted_sources, "gsp-fitted-sources", "the same for the fitted per-face sources (fitted_face_sources: what Python's distance_at reads)", false},
+      {Method::gsp_fitted_sources, "gsp-fitted-sources", "the same for the fitted per-face sources (fitted_face_sources: the sources Python's distance_at reads)", false},
       {Method::gsp_no_relax, "gsp-no-relax", "GSP without the vertex relaxation (per-face virtual sources alone)", false},
       {Method::gsp_no_line_test, "gsp-no-line-test", "GSP without the update step's straight-line test (rule 8; the final bound kept)", false},
       {Method::gsp_no_windows, "gsp-no-windows", "GSP without the carried windows (rule 10)", false},

@@ -43,7 +43,7 @@ VertexFaces::VertexFaces(const TriangleMesh& mesh) : begin(mesh.num_vertices() +
 }
 
 bool CoverageField::clear_of_samples(const LocalField& run) const {
-  // Through a corner (corner_bound): the samples of the faces round every vertex the run
+  // Through a corner (corner_paths): the samples of the faces round every vertex the run
   // reached within r, where a face holds few (more than kDense: a face large against r, whose
   // own virtual source is what reaches its inside). By vertex, not by the run's faces: a
   // sliver whose one virtual source reads as farther than r is not among those.
@@ -54,7 +54,7 @@ bool CoverageField::clear_of_samples(const LocalField& run) const {
     for (Index c = round_.begin[v]; c < round_.begin[v + 1] && clear; ++c) {
       const Index f = round_.faces[c];
       for (std::int32_t e = sample_count_[f] <= kDense ? sample_head_[f] : -1; e >= 0 && clear; e = sample_next_[e])
-        clear = !(corner_bound(mesh_, f, sample_position_[e], run_vertex_) < radius_);
+        clear = !(corner_paths(mesh_, f, sample_position_[e], run_vertex_) < radius_);
     }
   }
   for (std::size_t k = 0; k < run.faces.size() && clear; ++k) {

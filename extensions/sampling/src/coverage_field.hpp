@@ -19,14 +19,8 @@
 
 namespace gsp::sampling::detail {
 
-// min over the corners c of face f of d[c] + |p - c|: a path to p through a corner along the
-// straight segment inside the face (d: distances by vertex, +inf where unknown).
-inline double corner_bound(const TriangleMesh& mesh, Index face, Vec3 p, const std::vector<double>& d) {
-  double best = std::numeric_limits<double>::infinity();
-  for (Index v : mesh.triangles[face])
-    if (d[v] < best) best = std::min(best, d[v] + distance(p, mesh.positions[v]));
-  return best;
-}
+// The core's paths through a face's corners (gsp::corner_paths, geodesics.hpp).
+using gsp::corner_paths;
 
 // The faces round each vertex (CSR: those of v are faces[begin[v] .. begin[v + 1])).
 struct VertexFaces {
@@ -55,10 +49,10 @@ class CoverageField {
   // Distance from the point p of face f to the nearest sample so far, exact where it is
   // below r; at or above r it may be any value at or above r (+inf if none near). The lower
   // of the face's virtual sources and its corners' values plus the straight segment to p
-  // (corner_bound): each is the length of a path, and on a long sliver the one virtual source
+  // (corner_paths): each is the length of a path, and on a long sliver the one virtual source
   // can be a bend that is right for one end and far too long at the other.
   double distance_at(Index face, Vec3 p) const {
-    double best = corner_bound(mesh_, face, p, vertex_);
+    double best = corner_paths(mesh_, face, p, vertex_);
     auto take = [&](std::int32_t e) {
       const double d = pool_[e].sigma + distance(p, pool_[e].position);
       if (d < best) best = d;

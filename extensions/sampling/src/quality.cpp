@@ -68,7 +68,7 @@ SamplingQuality measure_quality(const Sampler& sampler, const SamplingResult& re
       auto through_corners = [&](Index f) {
         for (Index j = begin[f]; j < begin[f + 1]; ++j)
           if (by_face[j] != i)
-            q.min_distance = std::min(q.min_distance, detail::corner_bound(mesh, f, samples[by_face[j]].position, run_vertex));
+            q.min_distance = std::min(q.min_distance, corner_paths(mesh, f, samples[by_face[j]].position, run_vertex));
       };
       for (Index v : run.vertices)
         for (Index c = round.begin[v]; c < round.begin[v + 1]; ++c) through_corners(round.faces[c]);
