@@ -2,13 +2,11 @@
 // GeodesicOptions::fitted_face_sources: after a full run on the intrinsic Delaunay faces, each
 // input face's virtual source, chosen among the flipped faces it overlaps (face_frames.hpp) and
 // their neighbours across an edge as the one whose distances at the input face's corners come
-// closest to the vertices' values, and unfolded into the input face's plane. Part of the
-// gather (query_gather.hpp). docs/gsp-core.md, "Fitted face sources".
+// closest to the vertices' values, unfolded into the input face's plane and raised where it
+// reads below the straight line from its source. Part of the gather (query_gather.hpp). docs/gsp-core.md, "Fitted face sources".
 #include "intrinsic_geometry.hpp"
 #include "solver_impl.hpp"
 #include "virtual_source.hpp"
-
-#include <gsp/closest_point.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -36,7 +34,6 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
   // the corners: benign MRE 0.2080 -> 0.2104% against searching every face, malign unchanged;
   // the search ran on 80% of a benign scan's faces at 1e-5).
   constexpr double kFits = 1e-3;
-  constexpr double kLineSlack = 1e-5;   // the records' float rounding
   // The vertices' values and labels in memory order.
   std::vector<double> vdist(mesh().num_vertices());
   std::vector<Index> vlab(mesh().num_vertices());
@@ -57,42 +54,11 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
       const detail::FaceFrame* last = frames_of.end(Index(fi));
       const FaceRecord<Real>& own_record = state[fi];
       const Vec3 corners3d[3] = {mesh().positions[t[0]], mesh().positions[t[1]], mesh().positions[t[2]]};
-      // How much longer the path behind a source at s (3D, in the face's plane) must be for it to
-      // read at or above the straight line from its source p everywhere on the face. The
-      // shortfall f(x) = |x - p| + offset - (sigma + |x - s|) peaks, over the face, at a corner,
-      // at s when s lies inside, or on an edge where the two distances change alike: in the
-      // plane f has no other critical point (its gradient is a unit vector less one shorter,
-      // p lying off the plane; p in the plane: f is constant along the ray from p through s,
-      // which leaves the face across an edge), and along an edge (t, with s at distance b from
-      // its line and foot a, p at d and c) (t - a) d = +-(t - c) b.
+      // How much longer the path behind a source at s must be for it to read at or above the
+      // straight line from its source everywhere on the face (virtual_source.hpp).
       auto shortfall = [&](const Vec3& s, double sigma, Index source) {
         if (source >= points.size() || line_scale != 1) return 0.0;   // no 3D line to keep
-        const detail::SourcePoint& p = points[source];
-        // |x - p| <= |x - s| + |s - p|: a path behind s at least the straight line to s reads
-        // at or above the line everywhere (bends at a vertex, and most carried sources).
-        if (sigma >= p.offset + distance(s, p.position)) return 0.0;
-        double raise = 0;
-        auto test = [&](const Vec3& x) {
-          const double line = p.offset + distance(x, p.position), r = sigma + distance(x, s);
-          if (r < line * (1 - kLineSlack)) raise = std::max(raise, line - r);
-        };
-        for (int i = 0; i < 3; ++i) {
-          const Vec3 o = corners3d[i], e = corners3d[(i + 1) % 3] - o;
-          test(o);
-          const double len = norm(e);
-          if (!(len > 0)) continue;
-          const Vec3 u = e * (1 / len);
-          const double fa = dot(s - o, u), fb = norm(s - o - u * fa);
-          const double fc = dot(p.position - o, u), fd = norm(p.position - o - u * fc);
-          for (const double den : {fd + fb, fd - fb}) {
-            if (!(std::abs(den) > 1e-12 * len)) continue;
-            const double t = (fa * fd + (den == fd + fb ? fc * fb : -fc * fb)) / den;
-            if (std::isfinite(t)) test(o + u * std::clamp(t, 0.0, len));
-          }
-        }
-        const std::array<double, 3> w = closest_point_on_triangle(s, corners3d[0], corners3d[1], corners3d[2]);
-        test(corners3d[0] * w[0] + corners3d[1] * w[1] + corners3d[2] * w[2]);
-        return raise;
+        return detail::line_shortfall(corners3d, s, sigma, points[source].position, points[source].offset);
       };
       if (first == last && flipped[fi] == t && own_record.reached()) {
         // Most faces: no flip rewrote them and their own source fits their corners (checked in
@@ -105,8 +71,14 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
                                                 double(own_record.sy) * mean_edge);
           vs.sigma = double(own_record.sigma) * mean_edge;
           vs.source = own_record.source();
-          if (shortfall(vs.position, vs.sigma, vs.source) == 0) continue;
-          vs = VirtualSource{};   // below the line inside: searched like the others
+          // Raised to the line where it reads below it; searched like the others where that
+          // costs more than the fit's tolerance.
+          const double raise = shortfall(vs.position, vs.sigma, vs.source);
+          if (misfit + 3 * raise <= kFits * (d[0] + d[1] + d[2])) {
+            vs.sigma += raise;
+            continue;
+          }
+          vs = VirtualSource{};
         }
       }
       double best_misfit = std::numeric_limits<double>::infinity();
@@ -126,9 +98,9 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
         double sigma = double(st.sigma) * mean_edge;
         double reading[3];
         for (int i = 0; i < 3; ++i) reading[i] = sigma + distance(corners3d[i], s);
-        // Below the straight line from the source at a check point: the candidate's path length
-        // behind its source rises until it reads the line there (a longer path, still one on
-        // the surface).
+        // Below the straight line from the source somewhere on the face: the candidate's path
+        // length behind its source rises until it reads the line everywhere (a longer path,
+        // still one on the surface).
         const double raise = shortfall(s, sigma, label);
         sigma += raise;
         for (double& r : reading) r += raise;

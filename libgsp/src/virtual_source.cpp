@@ -1,9 +1,11 @@
 #include "virtual_source.hpp"
 
+#include <gsp/closest_point.hpp>
 #include <gsp/geodesics.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -48,6 +50,33 @@ void across_edge(const double mine[3], Index i, const double theirs[3], Index j,
   double ex, ey;
   canonical_frame(theirs, j, vt).to_edge(x, y, ex, ey);
   canonical_frame(mine, i, vm).to_canonical(same_dir ? ex : vm.e1 - ex, -ey, out[0], out[1]);
+}
+
+double line_shortfall(const Vec3 corners3d[3], Vec3 s, double sigma, Vec3 p, double offset) {
+  // |x - p| <= |x - s| + |s - p|: a path behind s at least the straight line to s reads at or
+  // above the line everywhere (bends at a vertex, and most carried sources).
+  if (sigma >= offset + distance(s, p)) return 0;
+  double raise = 0;
+  auto test = [&](const Vec3& x) {
+    raise = std::max(raise, offset + distance(x, p) - (sigma + distance(x, s)));
+  };
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 o = corners3d[i], e = corners3d[(i + 1) % 3] - o;
+    test(o);
+    const double len = norm(e);
+    if (!(len > 0)) continue;
+    const Vec3 u = e * (1 / len);
+    const double a = dot(s - o, u), b = norm(s - o - u * a), c = dot(p - o, u), d = norm(p - o - u * c);
+    for (const double sign : {1.0, -1.0}) {
+      const double den = d + sign * b;
+      if (!(std::abs(den) > 1e-12 * len)) continue;
+      const double t = (a * d + sign * c * b) / den;
+      if (std::isfinite(t)) test(o + u * std::clamp(t, 0.0, len));
+    }
+  }
+  const std::array<double, 3> w = closest_point_on_triangle(s, corners3d[0], corners3d[1], corners3d[2]);
+  test(corners3d[0] * w[0] + corners3d[1] * w[1] + corners3d[2] * w[2]);
+  return raise;
 }
 
 }  // namespace gsp::detail

@@ -20,4 +20,16 @@ bool unfolded_to_3d(const Vec3 corners3d[3], const double corners2d[3][2], doubl
 void across_edge(const double mine[3], Index i, const double theirs[3], Index j, bool same_dir, double x, double y,
                  double out[2]);
 
+// How much longer the path behind a virtual source at s (3D, in the plane of the face
+// `corners3d`) must be for sigma + |x - s| to reach the straight line offset + |x - p| from the
+// true source p at every point x of the face (0 if it does). Exact, in absolute terms: the
+// shortfall |x - p| - |x - s| has no critical point inside the face (its gradient is a unit
+// vector less one shorter, p lying off the plane; with p in the plane it is constant along the
+// ray from p through s, which leaves the face across an edge), so its largest value is at a
+// corner, at s when s lies inside, or on an edge where the two distances change alike:
+// (t - a) d = +-(t - c) b, s at distance b from the edge's line with foot a, p at d and c.
+// Relative to the line it may peak elsewhere (a sliver passing by the source: 0.003 short at
+// a far corner is 0.4% short beside the source), so no relative slack is taken off.
+double line_shortfall(const Vec3 corners3d[3], Vec3 s, double sigma, Vec3 p, double offset);
+
 }  // namespace gsp::detail
