@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
@@ -173,19 +172,6 @@ TEST(GeodesicBounds, SourceEdgesAreExact) {
   EXPECT_EQ(two.vertex_distance[centre], 0.0);
 }
 
-// Every mesh file of a folder (not point clouds), as the apps load them.
-std::vector<std::string> mesh_files(const std::string& folder) {
-  std::vector<std::string> files;
-  if (!std::filesystem::is_directory(folder)) return files;
-  for (const auto& e : std::filesystem::directory_iterator(folder)) {
-    const std::string ext = e.path().extension().string();
-    if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".gltf" || ext == ".glb")
-      files.push_back(e.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 // Over the shared meshes and the corpus: no NaN, nothing the edge graph reaches left
 // unreached, never above the edge path (vertices relaxed along the input's edges become
 // pseudo-sources) and never below the straight line (the bound raises what the propagation
@@ -193,9 +179,7 @@ std::vector<std::string> mesh_files(const std::string& folder) {
 // step bends where a straight path would go below it (rule 8 of docs/gsp-core.md).
 TEST(GeodesicBounds, SharedMeshesAndCorpus) {
   if (!test::have_shared_data()) GTEST_SKIP() << "shared meshes not found at " << test::data_dir();
-  std::vector<std::string> files = mesh_files(test::data_dir());
-  const std::vector<std::string> corpus = mesh_files(test::data_dir() + "/../corpus");
-  files.insert(files.end(), corpus.begin(), corpus.end());
+  const std::vector<std::string> files = test::shared_and_corpus_files();
   std::size_t checked = 0, below = 0, below_untested = 0, raised = 0;
   GeodesicOptions raw;
   raw.straight_line_bound = false;

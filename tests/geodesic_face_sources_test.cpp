@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -176,19 +175,11 @@ TEST(FaceSources, DefaultOnesAreTheInputFacesRun) {
 // a CAD gear 1.2% below inside a sliver (docs/gsp-core.md, "Fitted face sources").
 TEST(FaceSources, FittedReadingsKeepTheStraightLineOverTheCorpus) {
   if (!have_shared_data()) GTEST_SKIP() << "shared meshes not found at " << data_dir();
-  std::vector<std::string> files;
-  for (const std::string folder : {data_dir(), data_dir() + "/../corpus"})
-    for (const auto& e : std::filesystem::directory_iterator(folder)) {
-      const std::string ext = e.path().extension().string();
-      if (ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl" || ext == ".gltf" || ext == ".glb")
-        files.push_back(e.path().string());
-    }
-  std::sort(files.begin(), files.end());
   GeodesicOptions o;
   o.want_face_sources = true;
   o.fitted_face_sources = true;
   std::size_t fields = 0, readings = 0;
-  for (const std::string& path : files) {
+  for (const std::string& path : shared_and_corpus_files()) {
     cli::LoadedMesh in;
     try {
       in = cli::load_mesh(path, {});
