@@ -5,30 +5,11 @@
 
 #include <gsp/cli/app.hpp>
 
-#include <algorithm>
 #include <charconv>
 #include <filesystem>
-#include <random>
 #include <string>
 
 namespace gsp::bench {
-
-std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash) {
-  std::vector<std::uint8_t> used(mesh.num_vertices(), 0);
-  for (const Triangle& t : mesh.triangles)
-    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) used[t[0]] = used[t[1]] = used[t[2]] = 1;
-  std::vector<Index> candidates;
-  for (Index v = 0; v < mesh.num_vertices(); ++v)
-    if (used[v]) candidates.push_back(v);
-  std::mt19937_64 rng(seed ^ hash);
-  const std::size_t n = std::min<std::size_t>(std::size_t(std::max(count, 0)), candidates.size());
-  std::vector<Index> picks;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::swap(candidates[i], candidates[i + rng() % (candidates.size() - i)]);
-    picks.push_back(candidates[i]);
-  }
-  return picks;
-}
 
 BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load, int sources, std::uint64_t seed,
                           int subdivide, bool midpoint) {
@@ -42,7 +23,7 @@ BenchMesh load_bench_mesh(const std::string& path, const cli::LoadOptions& load,
     m.name += (midpoint ? "@mid" : "@loop") + std::to_string(subdivide);
   }
   m.hash = reference::mesh_hash(m.mesh);
-  m.sources = pick_sources(m.mesh, sources, seed, m.hash);
+  m.sources = reference::pick_sources(m.mesh, sources, seed, m.hash);
   return m;
 }
 

@@ -18,13 +18,6 @@ struct BenchMesh {
   std::vector<Index> sources;   // all picks, before sharding
 };
 
-// Vertices of `mesh` that belong to a non-degenerate face, `count` of them (fewer if the mesh
-// has fewer), drawn without replacement by a partial Fisher-Yates shuffle driven by
-// mt19937_64(seed ^ hash). mt19937_64's output is fixed by the standard, so the picks are
-// the same on every platform, and they are gsp-train-heuristic's picks for the same seed, so
-// the two apps share exact-cache entries.
-std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash);
-
 // Loads (gsp::cli::load_mesh; throws gsp::IoError for a bad file) and picks the sources.
 // `subdivide` > 0: Loop-subdivided that many times (subdivide.hpp), named "<file>@loop<K>",
 // or split at the edge midpoints with `midpoint`, named "<file>@mid<K>".

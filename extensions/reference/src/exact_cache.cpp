@@ -3,9 +3,11 @@
 #include <gsp/errors.hpp>
 #include <gsp/io/atomic_file.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <random>
 
 namespace gsp::reference {
 
@@ -27,6 +29,23 @@ std::uint64_t mesh_hash(const TriangleMesh& mesh) {
   for (const Vec3& p : mesh.positions) fnv(h, &p, sizeof p);
   for (const Triangle& t : mesh.triangles) fnv(h, t.data(), sizeof(Index) * 3);
   return h;
+}
+
+std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash) {
+  std::vector<std::uint8_t> used(mesh.num_vertices(), 0);
+  for (const Triangle& t : mesh.triangles)
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) used[t[0]] = used[t[1]] = used[t[2]] = 1;
+  std::vector<Index> candidates;
+  for (Index v = 0; v < mesh.num_vertices(); ++v)
+    if (used[v]) candidates.push_back(v);
+  std::mt19937_64 rng(seed ^ hash);
+  const std::size_t n = std::min<std::size_t>(std::size_t(std::max(count, 0)), candidates.size());
+  std::vector<Index> picks;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::swap(candidates[i], candidates[i + rng() % (candidates.size() - i)]);
+    picks.push_back(candidates[i]);
+  }
+  return picks;
 }
 
 ExactCache::ExactCache(std::string dir) : dir_(std::move(dir)) {}

@@ -16,6 +16,13 @@ namespace gsp::reference {
 // FNV-1a over the bytes of positions and triangles (the mesh the distances were computed on).
 std::uint64_t mesh_hash(const TriangleMesh& mesh);
 
+// The random source vertices gsp-bench and gsp-train-heuristic measure a mesh from: vertices
+// of a non-degenerate face, `count` of them (fewer if the mesh has fewer), drawn without
+// replacement by a partial Fisher-Yates shuffle driven by mt19937_64(seed ^ hash), with `hash`
+// the mesh's mesh_hash(). mt19937_64's output is fixed by the standard, so the picks are the
+// same on every platform and in both apps, which is what lets them share cache entries.
+std::vector<Index> pick_sources(const TriangleMesh& mesh, int count, std::uint64_t seed, std::uint64_t hash);
+
 class ExactCache {
  public:
   explicit ExactCache(std::string dir);   // "" disables the cache; the folder is created on demand
