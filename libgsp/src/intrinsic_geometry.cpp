@@ -238,8 +238,10 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
   std::vector<std::uint8_t> joins_fans(nv, 0);
   for (Index v : nonmanifold_vertices) joins_fans[v] = 1;
   // What each vertex's neighbours are, in one pass over the faces: kSaddleNext where one is a
-  // saddle, kCurvedNext where one is neither flat nor joining several fans.
-  constexpr std::uint8_t kSaddleNext = 1, kCurvedNext = 2;
+  // saddle, kCurvedNext where one is neither flat nor joining several fans, kTurnNext where
+  // one is a saddle or plain (a vertex no rule calls flat or convex: a mildly saddle one, a
+  // boundary corner), not joining several fans.
+  constexpr std::uint8_t kSaddleNext = 1, kCurvedNext = 2, kTurnNext = 4;
   std::vector<std::uint8_t> next_to(nv, 0);
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     if (skipped_face[f]) continue;
@@ -247,10 +249,14 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
     for (int i = 0; i < 3; ++i)
       for (int j = 1; j < 3; ++j) {
         const Index b = t[(i + j) % 3];
-        next_to[t[i]] |= std::uint8_t((kind[b] == kSaddleVertex ? kSaddleNext : 0) |
-                                      (kind[b] != kFlatVertex && !joins_fans[b] ? kCurvedNext : 0));
+        const bool curved = kind[b] != kFlatVertex && !joins_fans[b];
+        next_to[t[i]] |= std::uint8_t((kind[b] == kSaddleVertex ? kSaddleNext : 0) | (curved ? kCurvedNext : 0) |
+                                      (curved && kind[b] != kConvexVertex ? kTurnNext : 0));
       }
   }
+  // Flat vertices made plain below whose curved neighbours are all convex: convex themselves
+  // where they are alone on a crease (apply_crease_rules).
+  std::vector<Index> lone;
   for (std::size_t v = 0; v < nv; ++v) {
     // Barely saddle vertices go straight on like convex ones, unless a saddle is next to
     // them: in a cluster of negative curvature (a CAD part's concave fillet) the lines carried
@@ -266,12 +272,15 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
     // old ones, and lines carried past them came out short). Vertices joining
     // several fans have no angle sum to judge by and do not count (the local triangles of
     // point clouds overlap at many of them, on planes too).
-    if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) kind[v] = kPlainVertex;
+    if (kind[v] == kFlatVertex && (next_to[v] & kCurvedNext)) {
+      kind[v] = kPlainVertex;
+      if (!(next_to[v] & kTurnNext)) lone.push_back(Index(v));
+    }
   }
   if (crease_partner) {
     std::vector<std::uint8_t> interior(nv);   // the vertices with an angle sum of their own
     for (std::size_t v = 0; v < nv; ++v) interior[v] = used[v] && !boundary[v] && !joins_fans[v];
-    plain_on_saddle_creases(mesh, angle, interior, skipped_face, *crease_partner, kind);
+    apply_crease_rules(mesh, angle, interior, skipped_face, *crease_partner, lone, kind);
   }
   return kind;
 }

@@ -8,12 +8,13 @@
 
 namespace gsp::intrinsic {
 
-void plain_on_saddle_creases(const TriangleMesh& mesh, const std::vector<double>& angle,
-                             const std::vector<std::uint8_t>& interior, const std::vector<bool>& skipped_face,
-                             const std::function<Index(Index)>& partner, std::vector<std::uint8_t>& kind) {
+void apply_crease_rules(const TriangleMesh& mesh, const std::vector<double>& angle,
+                        const std::vector<std::uint8_t>& interior, const std::vector<bool>& skipped_face,
+                        const std::function<Index(Index)>& partner, const std::vector<Index>& lone,
+                        std::vector<std::uint8_t>& kind) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
-  bool any_flat = false;
+  bool any_flat = !lone.empty();
   for (std::size_t v = 0; v < nv && !any_flat; ++v) any_flat = kind[v] == kFlatVertex;
   if (!any_flat) return;
   // Which interior vertices are flat or saddles.
@@ -69,6 +70,10 @@ void plain_on_saddle_creases(const TriangleMesh& mesh, const std::vector<double>
       }
     }
   }
+  // A lone flat vertex between two curved ones on its crease: convex.
+  for (Index v : lone)
+    if (type[v] == kFlat && count[v] == 2 && type[crease[v][0]] != kFlat && type[crease[v][1]] != kFlat)
+      kind[v] = kConvexVertex;
   // Walk each crease line once, both ways from a flat vertex on it.
   std::vector<std::uint8_t> walked(nv, 0);
   std::vector<Index> line;

@@ -19,9 +19,11 @@ namespace gsp::intrinsic {
 //   flat and developable regions (planar CAD faces, fans) whatever the heuristic says.
 //   Only inside a flat region: a flat vertex with a neighbour that is not flat (vertices
 //   joining several fans aside) is plain, since a line carried past it can pass that
-//   neighbour on a side no surface path takes (midpoint-split meshes: 1% short on average).
-//   Nor on a crease that ends at a saddle: plain_on_saddle_creases() (saddle_creases.hpp),
-//   which needs the 3D creases; vertex_kinds() runs it when given a crease partner.
+//   neighbour on a side no surface path takes (midpoint-split meshes: 1% short on average);
+//   convex (below) where it is alone on its crease between two curved vertices and no
+//   neighbour is a saddle or plain (the middle of an edge of a mesh split once). Nor on a
+//   crease that ends at a saddle. Both from the 3D creases: apply_crease_rules()
+//   (saddle_creases.hpp); vertex_kinds() runs it when given a crease partner.
 // - kSaddleVertex for interior vertices whose angle sum exceeds 2 pi by more than
 //   kSaddleExcess (relative): unfolded round such a vertex, a straight line passing it on the
 //   wrong side is shorter than any path on the surface, so the probe is moved towards the
@@ -65,9 +67,9 @@ CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bo
 // give the sums of one pass to the bit (each vertex adds its corners in face order).
 void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                        const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end);
-// With `crease_partner` (3D positions only; see plain_on_saddle_creases() in
+// With `crease_partner` (3D positions only; see apply_crease_rules() in
 // saddle_creases.hpp for what it returns) the flat vertices on creases that end at saddles are
-// plain too.
+// plain too, and those alone on a crease between convex ones convex.
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
