@@ -14,9 +14,9 @@
 //
 // A flat vertex alone on its crease, between two curved vertices (the midpoint of an edge of
 // a mesh split once), with no neighbour a path may turn at, is treated as convex (rule 6: a
-// bend there only over-estimates, and the line to the centroid is checked, not carried past):
-// on the corpus split once the mean error went 0.147 -> 0.138% (benign) and 0.284 -> 0.274%
-// (malign); longer creases (split twice) lost accuracy that way and stay plain.
+// bend there only over-estimates, and the line to the centroid is checked, not carried past).
+// The vertices of longer creases (a mesh split twice) lost accuracy that way and stay plain
+// (the measurements: docs/gsp-core.md, rule 4, "Alone on a crease").
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <cstdint>
