@@ -15,6 +15,20 @@
 
 namespace gsp {
 
+namespace detail {
+
+// How much a face's source (at s, sigma behind it, label `source`) is raised so that it reads at
+// or above the straight line from its source everywhere on the face (line_shortfall); 0 where
+// there is no 3D line to keep (no such source point, or lengths not the 3D ones: line_scale
+// other than 1). The fitted sources and a solver without flips (query_gather.hpp) both ask it.
+inline double raise_to_line(const Vec3 corners3d[3], const Vec3& s, double sigma, Index source,
+                            const std::vector<SourcePoint>& points, double line_scale) {
+  if (source >= points.size() || line_scale != 1) return 0.0;
+  return line_shortfall(corners3d, s, sigma, points[source].position, points[source].offset);
+}
+
+}  // namespace detail
+
 template <class Real>
 void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, GeodesicResult& result,
                                                 unsigned threads,
@@ -57,8 +71,7 @@ void GeodesicSolver::Impl::fitted_face_sources(const FaceRecord<Real>* state, Ge
       // How much longer the path behind a source at s must be for it to read at or above the
       // straight line from its source everywhere on the face (virtual_source.hpp).
       auto shortfall = [&](const Vec3& s, double sigma, Index source) {
-        if (source >= points.size() || line_scale != 1) return 0.0;   // no 3D line to keep
-        return detail::line_shortfall(corners3d, s, sigma, points[source].position, points[source].offset);
+        return detail::raise_to_line(corners3d, s, sigma, source, points, line_scale);
       };
       if (first == last && flipped[fi] == t && own_record.reached()) {
         // Most faces: no flip rewrote them and their own source fits their corners (checked in

@@ -183,7 +183,7 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
     // Asked for fitted sources on a solver without flips (none needed, or intrinsic_delaunay
     // off): each face keeps its own, raised where it reads below the straight line from its
     // source, as a fitted one would be (fitted_face_sources.hpp).
-    const bool keep_line = options.fitted_face_sources && options.targets.empty() && points && line_scale == 1;
+    const bool keep_line = options.fitted_face_sources && options.targets.empty() && points;
     result.face_sources.resize(nf);
     detail::for_ranges(threads, nf, [&](std::size_t begin, std::size_t end, unsigned) {
       for (std::size_t fi = begin; fi < end; ++fi) {
@@ -193,11 +193,10 @@ void GeodesicSolver::Impl::gather(const Triangulation& tri, const FaceRecord<Rea
         vs.position = detail::canonical_to_3d(mesh(), Index(fi), double(st.sx) * mean_edge, double(st.sy) * mean_edge);
         vs.sigma = double(st.sigma) * mean_edge;
         vs.source = st.source();
-        if (!keep_line || vs.source >= points->size()) continue;
+        if (!keep_line) continue;
         const Triangle& t = mesh().triangles[fi];
         const Vec3 corners3d[3] = {mesh().positions[t[0]], mesh().positions[t[1]], mesh().positions[t[2]]};
-        const detail::SourcePoint& p = (*points)[vs.source];
-        vs.sigma += detail::line_shortfall(corners3d, vs.position, vs.sigma, p.position, p.offset);
+        vs.sigma += detail::raise_to_line(corners3d, vs.position, vs.sigma, vs.source, *points, line_scale);
       }
     });
     for (const auto& [copy, kept] : face_copies) result.face_sources[copy] = result.face_sources[kept];
