@@ -202,5 +202,32 @@ TEST(PathShared, FinEdgesAreNotCrossedBackAndForth) {
   EXPECT_LT(sum / double(n), 0.02);   // about 1% now (4.6% before)
 }
 
+// A model scaled by 1e-7 (edges of 3e-10) gets the paths it has at its own size: the taut
+// path's points were merged where closer than 1e-12 absolute, a point 0.1% of an edge from the
+// last was lost, the segment then skipped the face between them, and the path fell back to
+// the edge route (12.4% over the field; found by scripts/mutation_sweep.py --paths).
+TEST(PathShared, TinyScaleGivesTheSamePath) {
+  if (!have_shared_data()) GTEST_SKIP() << "shared data folder missing";
+  const TriangleMesh m = io::read_mesh(shared_mesh("camelhead.off")).mesh;
+  double at_unit = 0;
+  for (const double scale : {1.0, 1e-7, 1e-8}) {
+    TriangleMesh s = m;
+    for (Vec3& p : s.positions) p = scale * p;
+    const GeodesicSolver solver(s);
+    const pathfinding::PathTracer tracer(s);
+    for (const pathfinding::PathMethod method : {pathfinding::PathMethod::astar, pathfinding::PathMethod::windows}) {
+      pathfinding::PathQueryOptions o;
+      o.method = method;
+      const auto r = pathfinding::shortest_paths(solver, tracer, Endpoint::at_vertex(691), {Endpoint::at_vertex(4364)}, o);
+      ASSERT_TRUE(r.paths[0].found());
+      expect_valid_path(s, r.paths[0]);
+      EXPECT_EQ(r.edge_fallbacks, 0u) << "scale " << scale;
+      const double length = r.paths[0].length / scale;
+      if (scale == 1.0 && method == pathfinding::PathMethod::astar) at_unit = length;
+      EXPECT_NEAR(length, at_unit, 1e-5 * at_unit) << "scale " << scale;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace gsp::test

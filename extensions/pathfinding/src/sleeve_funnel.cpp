@@ -103,8 +103,12 @@ void Shortener::emit(std::vector<PathPoint>& out) {
   unfold();
   funnel();
   out.clear();
+  // A point at the previous one (up to the coordinates' rounding: a few dozen ulps, relative to
+  // the positions, not to a unit length; camelhead scaled by 1e-7 lost a point 0.1% of an edge
+  // from the last to 1e-12 absolute, and the segment then skipped the face between them).
+  auto same_place = [](Vec3 a, Vec3 b) { return distance(a, b) <= 1e-14 * std::max(norm(a), norm(b)); };
   auto push = [&](const PathPoint& q) {
-    if (!out.empty() && distance(out.back().position, q.position) <= 1e-12 * (1 + norm(q.position))) return;
+    if (!out.empty() && same_place(out.back().position, q.position)) return;
     out.push_back(q);
   };
   push(bary_point(s_.faces[0], start_));
@@ -128,8 +132,7 @@ void Shortener::emit(std::vector<PathPoint>& out) {
     }
   }
   PathPoint last = bary_point(s_.faces.back(), end_);
-  if (!out.empty() && out.size() > 1 && distance(out.back().position, last.position) <= 1e-12 * (1 + norm(last.position)))
-    out.pop_back();
+  if (!out.empty() && out.size() > 1 && same_place(out.back().position, last.position)) out.pop_back();
   out.push_back(last);
 }
 
