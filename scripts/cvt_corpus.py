@@ -104,7 +104,7 @@ def run_mesh(args, path):
         if "components" in r:   # gsp: what happened to each input component
             outcomes = {}
             for c in r["components"]:
-                key = c["outcome"] + ("_without_features" if c.get("features_dropped") else "")
+                key = c["outcome"] + ("_by_edges" if c.get("by_edge_operations") else "") + ("_without_features" if c.get("features_dropped") else "")
                 outcomes[key] = outcomes.get(key, 0) + 1
             row[prefix + "_component_outcomes"] = " ".join(f"{k}:{v}" for k, v in sorted(outcomes.items()))
             row[prefix + "_kept_reasons"] = "; ".join(sorted({c["reason"] for c in r["components"] if c["reason"]}))[:300]

@@ -29,3 +29,5 @@ gsp_test(cvt_triangle_geometry_test SOURCES cvt_triangle_geometry_test.cpp DEPS 
 target_include_directories(cvt_triangle_geometry_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
 gsp_test(cvt_planar_flips_test SOURCES cvt_planar_flips_test.cpp DEPS gsp::cvt)
 target_include_directories(cvt_planar_flips_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
+gsp_test(cvt_edge_remesh_test SOURCES cvt_edge_remesh_test.cpp DEPS gsp::cvt gsp::io)
+target_include_directories(cvt_edge_remesh_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)

@@ -135,8 +135,10 @@ every run, see gsp-cvt --threads). progress(fraction) is called per iteration; C
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
-component is remeshed on its own (vertices by area); one that cannot be (non-manifold edges,
-not orientable, too small a share, a remesh without its topology) is returned as it is, with
+component is remeshed on its own (vertices by area); one whose CVT dual lacks its topology
+(handles or walls thinner than the spacing) is remeshed by edge operations instead (split,
+collapse, flip, smooth, project: docs/cvt.md). One that cannot be (non-manifold edges, not
+orientable, too small a share, neither remesh with its topology) is returned as it is, with
 a gsp.RemeshWarning naming it and the reason; ValueError when no component could be
 remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. feature_angle
 (degrees, 0 = off): edges whose faces' normals differ by more than this form crease curves,

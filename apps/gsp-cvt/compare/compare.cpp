@@ -145,6 +145,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
     j["features_dropped"] = c.features_dropped;
     j["retries"] = c.retries;
     j["grown"] = c.grown;
+    j["by_edge_operations"] = c.by_edge_operations;
     row.components.push_back(std::move(j));
   }
   return row;

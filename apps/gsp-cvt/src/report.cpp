@@ -115,6 +115,8 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
     j["output_faces"] = c.output_faces;
     j["outcome"] = cvt::outcome_name(c.outcome);
     j["reason"] = c.reason;
+    j["by_edge_operations"] = c.by_edge_operations;
+    j["cvt_failure"] = c.cvt_failure;
     list.push_back(std::move(j));
   }
 }
@@ -129,6 +131,11 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (retried)
     ctx.note(std::to_string(retried) + " components remeshed from other initial sites (the first remesh did not have the "
                                        "component's topology)");
+  std::size_t by_edges = 0;
+  for (const cvt::ComponentReport& c : r.components) by_edges += c.by_edge_operations && c.outcome == cvt::ComponentOutcome::remeshed;
+  if (by_edges)
+    ctx.note(std::to_string(by_edges) + " components remeshed by edge operations (no CVT dual had the component's "
+                                        "topology; their vertices belong to no region)");
   std::size_t dropped = 0;
   for (const cvt::ComponentReport& c : r.components) dropped += c.features_dropped && c.outcome == cvt::ComponentOutcome::remeshed;
   if (dropped)

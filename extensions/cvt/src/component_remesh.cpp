@@ -1,10 +1,16 @@
 #include "component_remesh.hpp"
+#include "edge_remesh.hpp"
+#include "post_pass.hpp"
 
+#include <gsp/cvt/closest_point_index.hpp>
 #include <gsp/cvt/components.hpp>
+#include <gsp/cvt/quality.hpp>
 #include <gsp/errors.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace gsp::cvt::detail {
@@ -12,6 +18,14 @@ namespace gsp::cvt::detail {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr double kMinAngleDeg = 20;   // issue 22's quality floor
+
+std::string fixed2(double x, const char* unit) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.2f%s", x, unit);
+  return b;
+}
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -22,6 +36,55 @@ std::size_t orient_by_majority(TriangleMesh& m) {
   if (2 * std::size_t(flipped) <= m.num_faces()) return std::size_t(flipped);
   for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
   return m.num_faces() - std::size_t(flipped);
+}
+
+// The remesh by edge operations (edge_remesh.hpp) of a component no CVT dual had the topology
+// of, at the spacing of its share of the sites, then the dual's post-pass. Kept where it has the
+// component's topology, a smallest angle of at least 20 degrees or at least the input's own, and
+// no larger share of angles below 30 degrees than the input: never worse than keeping the input
+// (as for a small component raised above its share), which a modelled part's well-shaped input
+// can be against a remesh with needles at a handle thinner than the spacing. Empty where not;
+// `why` says why.
+TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, std::size_t sites, const CvtOptions& co,
+                                    const SurfaceRemeshOptions& options, RemeshStats& remesh_stats, std::string& why) {
+  // N = 2 A / (sqrt(3) L^2), as CvtOptions::edge_length converts it.
+  const double length = std::sqrt(2 * area / (std::sqrt(3.0) * double(std::max<std::size_t>(sites, 1))));
+  const ClosestPointIndex surface(oriented);
+  // The splits may pass through many more vertices than the share where they cut a CAD part's
+  // fans of needles before the collapses thin them out (the boiler section at 5,000 sites:
+  // 190,000); a hundred times the share bounds the memory (about 300 bytes a vertex in
+  // OpenMesh's mesh).
+  const std::size_t cap = oriented.num_vertices() + 100 * std::max<std::size_t>(sites, 1);
+  const double feature_angle = co.feature_angle > 0 ? co.feature_angle : options.edge_feature_angle;
+  TriangleMesh edges =
+      remesh_by_edge_operations(oriented, surface, length, feature_angle, options.edge_iterations, cap);
+  if (edges.triangles.empty()) {
+    why = "no remesh by edge operations (too many splits, or a fold)";
+    return {};
+  }
+  std::string defect;
+  if (!same_topology_per_component(oriented, edges, &defect)) {
+    why = "the remesh by edge operations had " + defect;
+    return {};
+  }
+  // Then the CVT dual's post-pass (flips, moves, far-point insertions) against the input: it
+  // keeps the topology by construction, and is put back where the check says otherwise.
+  TriangleMesh improved = edges;
+  std::vector<Index> no_sites(improved.num_vertices(), kInvalidIndex);
+  RemeshStats post;
+  improve_remesh(improved, no_sites, oriented, bounding_box(oriented).diagonal(), sites, options.remesh, nullptr, post);
+  if (same_topology_per_component(oriented, improved)) edges = std::move(improved), remesh_stats = post;
+  const MeshQuality q = measure_mesh_quality(edges), input_q = measure_mesh_quality(oriented);
+  if (q.min_angle < std::min(kMinAngleDeg, input_q.min_angle)) {
+    why = "the remesh by edge operations had a smallest angle of " + fixed2(q.min_angle, " degrees") + ", below the input's";
+    return {};
+  }
+  if (q.below_30 > input_q.below_30) {
+    why = "the remesh by edge operations had more angles below 30 degrees than the input (" + fixed2(100 * q.below_30, "%") +
+          " against " + fixed2(100 * input_q.below_30, "%") + ")";
+    return {};
+  }
+  return edges;
 }
 
 }  // namespace
@@ -87,6 +150,22 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
       c.seed = co.seed;
       ++rep.grown;
       ok = attempt(cvt, r, out.why);
+    }
+    if (!ok && options.edge_operations) {
+      const auto t0 = Clock::now();
+      std::string why;
+      TriangleMesh edges = edge_operations_remesh(oriented, rep.area, n, co, options, out.remesh_stats, why);
+      rep.remesh_seconds += seconds_since(t0);
+      if (!edges.triangles.empty()) {
+        rep.cvt_failure = out.why;
+        rep.by_edge_operations = true;
+        out.ok = true;
+        out.by_edge_operations = true;
+        out.vertex_label.assign(input.num_vertices(), kInvalidIndex);
+        out.mesh = std::move(edges);
+        return out;
+      }
+      out.why += "; " + why;
     }
     out.ok = ok;
     if (ok) {

@@ -21,6 +21,9 @@ struct ComponentRemesh {
   CvtStats cvt_stats;                // the last attempt's (its phase times: `timings` below)
   RemeshStats remesh_stats;
   TriangleMesh mesh;
+  // No CVT dual had the component's topology, and `mesh` is its remesh by edge operations
+  // instead (edge_remesh.hpp; SurfaceRemeshOptions::edge_operations): no regions, no energy.
+  bool by_edge_operations = false;
   // The CVT's phase times summed over every attempt (without features, from other initial
   // sites, grown), kept or not: where the component's time went.
   CvtTimings timings;
@@ -31,7 +34,8 @@ struct ComponentRemesh {
 // (a component raised above its share) with twice the sites, twice at most, within its own
 // vertex count; rep.sites is the component's share of the budget. Fills rep's orientation,
 // retry and time figures; keeps nothing of the working mesh. A gsp::Error is reported in the
-// result, anything else thrown.
+// result, anything else thrown. Where no attempt has the topology, the component is remeshed
+// by edge operations (with SurfaceRemeshOptions::edge_operations) and kept if that has it.
 ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
                                  ComponentReport& rep, bool grow = false);
 

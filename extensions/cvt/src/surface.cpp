@@ -281,12 +281,14 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
         for (std::size_t v = 0; v < input.num_vertices(); ++v)
           if (r.vertex_label[v] != kInvalidIndex)
             label[fans.vertex_source[split.vertex_ids[ci][v]]] = Index(out.sites + r.vertex_label[v]);
-        out.sites += r.sites;
-        out.energy += r.energy;
-        add_curve(out.energy_curve, r.energy_curve);
-        add_stats(out.cvt_stats, r.cvt_stats, first);
         add_stats(out.remesh_stats, r.remesh_stats);
-        first = false;
+        if (!r.by_edge_operations) {   // a remesh by edge operations has no regions and no energy
+          out.sites += r.sites;
+          out.energy += r.energy;
+          add_curve(out.energy_curve, r.energy_curve);
+          add_stats(out.cvt_stats, r.cvt_stats, first);
+          first = false;
+        }
         rep.output_vertices = r.mesh.num_vertices();
         rep.output_faces = r.mesh.num_faces();
         append(out.mesh, r.mesh);

@@ -56,6 +56,18 @@ struct SurfaceRemeshOptions {
   int hopeless_check_iteration = 5;
   std::size_t hopeless_defects = 50;
   double hopeless_fraction = 0.02;
+  // A component none of whose CVT duals has its topology is remeshed by edge operations
+  // instead (long edges split, short ones collapsed, flips towards valence 6, tangential
+  // smoothing and projection onto the input, edge_iterations rounds, at the spacing of its
+  // share of the sites): those keep the topology by construction. Kept as it is only where
+  // that fails too. Off: such components are kept (docs/cvt.md, "Edge operations where the
+  // dual fails").
+  bool edge_operations = true;
+  int edge_iterations = 10;
+  // Creases of the input sharper than this (degrees between the faces' normals) stay chains
+  // of edges in a remesh by edge operations (CvtOptions::feature_angle instead where that is
+  // set): a CAD part's corners and edges kept instead of rounded off.
+  double edge_feature_angle = 40;
 };
 
 enum class ComponentOutcome {
@@ -84,6 +96,10 @@ struct ComponentReport {
   // count).
   std::size_t grown = 0;
   std::size_t output_vertices = 0, output_faces = 0;
+  // Remeshed by edge operations (SurfaceRemeshOptions::edge_operations) because no CVT dual
+  // had the topology; cvt_failure says what the last dual lacked. No regions then.
+  bool by_edge_operations = false;
+  std::string cvt_failure;
   ComponentOutcome outcome = ComponentOutcome::remeshed;
   std::string reason;                      // empty when remeshed
   double cvt_seconds = 0, remesh_seconds = 0;
