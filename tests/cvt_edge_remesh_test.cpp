@@ -112,6 +112,22 @@ TEST(EdgeRemesh, OpenPatchKeepsItsBoundaryOnTheBoundary) {
   EXPECT_NEAR(area_of(out), 1.0, 1e-9);   // the corners are kept, the sides stay straight
 }
 
+// The ADIS sensor STL (24 screw holes, thin walls) at the spacing of 5,000 sites: two vertices
+// were projected onto one input point at a hole, and the remesh had a duplicate vertex (so its
+// topology check failed and the part was kept). A vertex is not moved onto a neighbour's place.
+TEST(EdgeRemesh, NoTwoVerticesProjectedOntoOnePoint) {
+  if (!test::have_shared_data()) GTEST_SKIP() << "shared data folder missing";
+  TriangleMesh sensor = weld_input(io::read_mesh(test::shared_mesh("adis16480_sensor.stl")).mesh, 0.0).mesh;
+  orient_consistently(sensor);
+  const ClosestPointIndex surface(sensor);
+  const TriangleMesh out = detail::remesh_by_edge_operations(sensor, surface, 0.0013, 40, 10, 1000000);
+  ASSERT_FALSE(out.triangles.empty());
+  std::string why;
+  std::size_t defects = 0;
+  EXPECT_TRUE(same_topology_per_component(sensor, out, &why, &defects)) << why;
+  EXPECT_EQ(defects, 0u);
+}
+
 TEST(EdgeRemesh, GivesUpAtTheVertexCap) {
   const TriangleMesh plate = test::plate_with_hole(1.0, 0.3, 0.05, 64);
   const ClosestPointIndex surface(plate);

@@ -375,7 +375,13 @@ class Remesher {
       const Triangle& t = input_.triangles[c.point.element];
       if (OpenMesh::dot(input_normal(input_.positions[t[0]], input_.positions[t[1]], input_.positions[t[2]]), vertex_normal(v)) < 0)
         continue;
-      m_.point(v) = P(c.position.x, c.position.y, c.position.z);
+      // Nor onto a neighbour's place (two vertices met at the sensor STL's screw holes: a
+      // duplicate vertex, and the component was kept).
+      const P q(c.position.x, c.position.y, c.position.z);
+      bool taken = false;
+      for (Mesh::VertexHandle w : m_.vv_range(v)) taken |= (m_.point(w) - q).norm() <= 1e-6 * low_;
+      if (taken) continue;
+      m_.point(v) = q;
       m_.property(hint, v) = c.point.element;
     }
   }
