@@ -72,7 +72,8 @@ TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, s
   TriangleMesh improved = edges;
   std::vector<Index> no_sites(improved.num_vertices(), kInvalidIndex);
   RemeshStats post;
-  improve_remesh(improved, no_sites, oriented, bounding_box(oriented).diagonal(), sites, options.remesh, nullptr, post);
+  improve_remesh(improved, no_sites, oriented, bounding_box(oriented).diagonal(), sites, options.remesh, nullptr, post,
+                 &surface);
   if (same_topology_per_component(oriented, improved)) edges = std::move(improved), remesh_stats = post;
   const MeshQuality q = measure_mesh_quality(edges), input_q = measure_mesh_quality(oriented);
   if (q.min_angle < std::min(kMinAngleDeg, input_q.min_angle)) {

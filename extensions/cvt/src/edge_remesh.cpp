@@ -1,5 +1,7 @@
 #include "edge_remesh.hpp"
 
+#include "triangle_geometry.hpp"
+
 #include <gsp/cvt/features.hpp>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -253,34 +255,44 @@ class Remesher {
 
   // The angle of h's face at the corner opposite h.
   double corner_angle(Mesh::HalfedgeHandle h) const {
-    const Mesh::HalfedgeHandle n = m_.next_halfedge_handle(h);
-    const P o = m_.point(m_.to_vertex_handle(n));
-    const P u = m_.point(m_.from_vertex_handle(h)) - o, w = m_.point(m_.to_vertex_handle(h)) - o;
-    return std::atan2(OpenMesh::cross(u, w).norm(), OpenMesh::dot(u, w));
+    const Mesh::VertexHandle o = m_.to_vertex_handle(m_.next_halfedge_handle(h));
+    return angle_at(at(o), at(m_.from_vertex_handle(h)), at(m_.to_vertex_handle(h)));
   }
 
-  static double smallest_angle(const P& a, const P& b, const P& c) {
-    auto at = [](const P& o, const P& x, const P& y) {
-      const P u = x - o, w = y - o;
-      return std::atan2(OpenMesh::cross(u, w).norm(), OpenMesh::dot(u, w));
-    };
-    return std::min({at(a, b, c), at(b, c, a), at(c, a, b)});
+  Vec3 at(Mesh::VertexHandle v) const {
+    const P& p = m_.point(v);
+    return {p[0], p[1], p[2]};
+  }
+
+  // Interior edge e's two faces (a, b, c) and (b, a, d), and the same quad flipped, (d, b, c)
+  // and (c, a, d).
+  struct Quad {
+    Vec3 a, b, c, d;
+  };
+  Quad quad_of(Mesh::EdgeHandle e) const {
+    const Mesh::HalfedgeHandle h0 = m_.halfedge_handle(e, 0), h1 = m_.halfedge_handle(e, 1);
+    return {at(m_.from_vertex_handle(h0)), at(m_.to_vertex_handle(h0)), at(m_.to_vertex_handle(m_.next_halfedge_handle(h0))),
+            at(m_.to_vertex_handle(m_.next_halfedge_handle(h1)))};
+  }
+
+  // Whether flipping interior edge e keeps the surface: not a feature edge, its faces' normals
+  // less than acos(min_cos) apart, neither new face turned over.
+  bool flip_keeps_surface(Mesh::EdgeHandle e, const Quad& q, double min_cos) const {
+    if (m_.is_boundary(e) || m_.property(feature_, e) || !m_.is_flip_ok(e)) return false;
+    const Vec3 n1 = normal(q.a, q.b, q.c), n2 = normal(q.b, q.a, q.d);
+    if (!(dot(n1, n2) > min_cos * norm(n1) * norm(n2))) return false;
+    const Vec3 sum = (1 / norm(n1)) * n1 + (1 / norm(n2)) * n2;
+    auto same_side = [&](const Vec3& after) { return norm(after) > 1e-12 * norm(sum) && dot(sum, after) > 0; };
+    return same_side(normal(q.d, q.b, q.c)) && same_side(normal(q.c, q.a, q.d));
   }
 
   // Flips interior edge e where the two faces are less than 30 degrees apart, no new face turns
   // over and the smallest angle of the two rises.
   bool try_flip(Mesh::EdgeHandle e) {
-    if (m_.is_boundary(e) || m_.property(feature_, e) || !m_.is_flip_ok(e)) return false;
-    const Mesh::HalfedgeHandle h0 = m_.halfedge_handle(e, 0), h1 = m_.halfedge_handle(e, 1);
-    const P pa = m_.point(m_.from_vertex_handle(h0)), pb = m_.point(m_.to_vertex_handle(h0));
-    const P pc = m_.point(m_.to_vertex_handle(m_.next_halfedge_handle(h0)));
-    const P pd = m_.point(m_.to_vertex_handle(m_.next_halfedge_handle(h1)));
-    const P n1 = normal_of(pa, pb, pc), n2 = normal_of(pb, pa, pd);
-    if (!(OpenMesh::dot(n1, n2) > std::cos(30 * M_PI / 180) * n1.norm() * n2.norm())) return false;
-    const P sum = n1 / n1.norm() + n2 / n2.norm();
-    if (!same_side(sum, normal_of(pd, pb, pc)) || !same_side(sum, normal_of(pc, pa, pd))) return false;
-    const double before = std::min(smallest_angle(pa, pb, pc), smallest_angle(pb, pa, pd));
-    const double after = std::min(smallest_angle(pd, pb, pc), smallest_angle(pc, pa, pd));
+    const Quad q = quad_of(e);
+    if (!flip_keeps_surface(e, q, std::cos(30 * M_PI / 180))) return false;
+    const double before = std::min(min_angle(q.a, q.b, q.c), min_angle(q.b, q.a, q.d));
+    const double after = std::min(min_angle(q.d, q.b, q.c), min_angle(q.c, q.a, q.d));
     if (!(after > before)) return false;
     m_.flip(e);
     ++stats_.flips;
@@ -294,7 +306,7 @@ class Remesher {
   // (normals more than 60 degrees apart) or a new face would turn over.
   void equalize_valences() {
     for (Mesh::EdgeHandle e : m_.edges()) {
-      if (m_.status(e).deleted() || m_.is_boundary(e) || m_.property(feature_, e) || !m_.is_flip_ok(e)) continue;
+      if (m_.status(e).deleted() || m_.is_boundary(e)) continue;
       const Mesh::HalfedgeHandle h0 = m_.halfedge_handle(e, 0), h1 = m_.halfedge_handle(e, 1);
       const Mesh::VertexHandle a = m_.from_vertex_handle(h0), b = m_.to_vertex_handle(h0);
       const Mesh::VertexHandle c = m_.to_vertex_handle(m_.next_halfedge_handle(h0));
@@ -305,13 +317,7 @@ class Remesher {
       };
       const int before = dev(a, 0) + dev(b, 0) + dev(c, 0) + dev(d, 0);
       const int after = dev(a, -1) + dev(b, -1) + dev(c, 1) + dev(d, 1);
-      if (after >= before) continue;
-      const P pa = m_.point(a), pb = m_.point(b), pc = m_.point(c), pd = m_.point(d);
-      const P n1 = normal_of(pa, pb, pc), n2 = normal_of(pb, pa, pd);
-      if (!(OpenMesh::dot(n1, n2) > 0.5 * n1.norm() * n2.norm())) continue;
-      const P sum = n1 / n1.norm() + n2 / n2.norm();
-      // The quad a, d, b, c split the other way: (d, b, c) and (c, a, d).
-      if (!same_side(sum, normal_of(pd, pb, pc)) || !same_side(sum, normal_of(pc, pa, pd))) continue;
+      if (after >= before || !flip_keeps_surface(e, quad_of(e), 0.5)) continue;
       m_.flip(e);
       ++stats_.flips;
     }

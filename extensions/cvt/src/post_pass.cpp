@@ -9,6 +9,7 @@
 #include <gsp/cvt/closest_point_index.hpp>
 
 #include <algorithm>
+#include <memory>
 
 namespace gsp::cvt::detail {
 
@@ -36,7 +37,8 @@ void drop_unused_vertices(TriangleMesh& mesh, std::vector<Index>& vertex_site) {
 }  // namespace
 
 void improve_remesh(TriangleMesh& mesh, std::vector<Index>& vertex_site, const TriangleMesh& surface, double diagonal,
-                    std::size_t sites, const RemeshOptions& options, const std::vector<bool>* lock, RemeshStats& stats) {
+                    std::size_t sites, const RemeshOptions& options, const std::vector<bool>* lock, RemeshStats& stats,
+                    const ClosestPointIndex* given_index) {
   if (options.flip_edges) stats.flips = improve_by_flips(mesh, options.flip_max_normal_angle, 20, lock);
   if (!options.smooth || mesh.triangles.empty()) return;
   SmoothParams sp;
@@ -53,7 +55,9 @@ void improve_remesh(TriangleMesh& mesh, std::vector<Index>& vertex_site, const T
   stats.boundary_splits = split_boundary_edges(mesh, curves, options.boundary_chord * diagonal, 30.0, 3, lock);
   vertex_site.resize(mesh.num_vertices(), kInvalidIndex);
   // One index over the surface for all the steps below (the working mesh: 0.3-0.8 M faces).
-  const ClosestPointIndex surface_index(surface);
+  std::unique_ptr<ClosestPointIndex> own_index;
+  if (!given_index) own_index = std::make_unique<ClosestPointIndex>(surface);
+  const ClosestPointIndex& surface_index = given_index ? *given_index : *own_index;
   sp.surface_index = &surface_index;
   const SmoothCounts c = smooth_vertices(mesh, surface, surface, curves, sp);
   stats.smoothing_moves = c.moves;
