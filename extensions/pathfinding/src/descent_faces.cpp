@@ -1,6 +1,8 @@
 #include "descent_faces.hpp"
 #include "sleeve.hpp"
 
+#include <gsp/surface_point.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -115,12 +117,8 @@ bool face_source_start(const TriangleMesh& mesh, const Connectivity& conn, const
     if (!field.reached(f)) continue;
     const VirtualSource vs = field.source_at(f, mesh.positions[u]);
     if (vs.sigma > 1e-9 * (1 + d[u])) continue;
-    const Triangle& t = mesh.triangles[f];
-    const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = vs.position - a;
-    const double d00 = dot(e0, e0), d01 = dot(e0, e1), d11 = dot(e1, e1), d20 = dot(e2, e0), d21 = dot(e2, e1);
-    const double den = d00 * d11 - d01 * d01;
-    if (!(den > 0)) continue;
-    const double b1 = (d11 * d20 - d01 * d21) / den, b2 = (d00 * d21 - d01 * d20) / den, b0 = 1 - b1 - b2;
+    const auto [b0, b1, b2] = affine_coordinates(mesh, f, vs.position);
+    if (b0 == 0 && b1 == 0 && b2 == 0) continue;   // no plane (coordinates of a face sum to 1)
     if (std::min({b0, b1, b2}) < -1e-6 || distance(vs.position, mesh.positions[u]) <= 1e-9 * (1 + scale)) continue;
     start.point = SurfacePoint::in_face(f, {std::max(0.0, b0), std::max(0.0, b1), std::max(0.0, b2)});
     start.position = vs.position;

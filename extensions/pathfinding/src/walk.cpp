@@ -89,6 +89,18 @@ Walk::VertexStep Walk::step_vertex(Index v, Walker& w) {
   if (r == VertexStep::source) {
     at_source_ = true;
     w.position = mesh_.positions[v];
+    // The point's face and weights name v too: the walker may come from a face without area
+    // that ends at v's line but not at v (a CAD part's T-junction), whose weights were of
+    // another corner (the log cabin STL: the path's last point 33.6 units from its face point).
+    const Triangle* t = w.face < mesh_.num_faces() ? &mesh_.triangles[w.face] : nullptr;
+    const Index* corner = t ? std::find(t->begin(), t->end(), v) : nullptr;
+    if (t && corner != t->end()) {
+      w.bary = corner_bary(Index(corner - t->begin()));
+    } else {
+      const Index c = conn_.vertex_corners[conn_.vertex_corner_begin[v]];
+      w.face = face_of(c);
+      w.bary = corner_bary(corner_of(c));
+    }
   }
   return r;
 }

@@ -37,11 +37,46 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
   const std::vector<double>& values = field_.vertex_distance();
   const double dv = v < values.size() ? values[v] : kInf;
   double best = kInf, best_any = kInf;
-  Index best_corner = kInvalidIndex, best_any_corner = kInvalidIndex, at_v = kInvalidIndex;
+  Index at_v = kInvalidIndex;
+  struct Start {
+    Index face = kInvalidIndex;
+    Bary bary{};
+  } best_start, best_any_start;
+  // A face g holding v (at a corner, or on an edge) at weights b, whose corners j, l bound the
+  // wedge the straight line from v to g's source must enter.
+  auto consider = [&](Index g, const Bary& b, int j, int l) {
+    const VirtualSource s = field_.source_at(g, pv);
+    const double d = own_value(g, pv);
+    Bary bs;
+    bary_of(g, s.position, bs);
+    const bool enters = bs[j] >= -kBaryTol && bs[l] >= -kBaryTol;
+    if (d < best_any) best_any = d, best_any_start = {g, b};
+    if (enters && d < best) best = d, best_start = {g, b};
+  };
   for (Index k = conn_.vertex_corner_begin[v]; k < conn_.vertex_corner_begin[v + 1]; ++k) {
     const Index c = conn_.vertex_corners[k];
     const Index f = face_of(c);
-    if (!usable(f)) continue;
+    const Index i = corner_of(c);
+    if (!usable(f)) {
+      // A face without area with v on its long edge (a CAD part's T-junction: v lies on the
+      // edge of the faces beyond): v is a point of those faces' edge, and the walk starts in
+      // them. The field's value at v comes from them; with v's faces all flat or without
+      // the reached one, the walk had no face to start in.
+      if (!reached(f) || repeats_vertex(mesh_.triangles[f])) continue;
+      const Index h = 3 * f + Index((i + 1) % 3);   // the edge opposite v
+      for (Index g = conn_.radial_next[h]; g != h; g = conn_.radial_next[g]) {
+        const Index fg = face_of(g);
+        Bary b;
+        if (fg == f || !usable(fg) || !bary_of(fg, pv, b)) continue;
+        const int opposite = int(corner_of(prev_halfedge(g)));
+        if (std::min({b[0], b[1], b[2]}) < -kBaryTol || b[opposite] > kBaryTol) continue;   // v not on that edge
+        const VirtualSource s = field_.source_at(fg, pv);
+        if (distance(s.position, pv) <= 10 * eps_) continue;
+        b[opposite] = 0;
+        consider(fg, b, opposite, opposite);
+      }
+      continue;
+    }
     const VirtualSource s = field_.source_at(f, pv);
     if (distance(s.position, pv) <= 10 * eps_) {
       // The face's source sits on v: v is the real source (sigma 0), or the path turned here
@@ -56,20 +91,14 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
       at_v = f;
       continue;
     }
-    const double d = own_value(f, pv);
-    Bary bs;
-    bary_of(f, s.position, bs);
-    const Index i = corner_of(c), j = (i + 1) % 3, l = (i + 2) % 3;
-    const bool enters = bs[j] >= -kBaryTol && bs[l] >= -kBaryTol;
-    if (d < best_any) best_any = d, best_any_corner = c;
-    if (enters && d < best) best = d, best_corner = c;
+    consider(f, corner_bary(i), int((i + 1) % 3), int((i + 2) % 3));
   }
   // A carried source clearly shorter than any face's own: go on with it.
   const double carried = w.face != kInvalidIndex && w.sigma < kInf ? w.value() : kInf;
   const double tol = 1e-6 * carried + 10 * eps_;
-  if (best_corner != kInvalidIndex && best > carried + tol) best_corner = kInvalidIndex;
-  if (best_corner == kInvalidIndex && best_any <= carried + tol) best_corner = best_any_corner, best = best_any;
-  if (best_corner == kInvalidIndex) {
+  if (best_start.face != kInvalidIndex && best > carried + tol) best_start = {};
+  if (best_start.face == kInvalidIndex && best_any <= carried + tol) best_start = best_any_start, best = best_any;
+  if (best_start.face == kInvalidIndex) {
     if (carried < kInf) return VertexStep::keep;
     // Every reached face has its source on v: a vertex source with an initial offset.
     if (at_v != kInvalidIndex) {
@@ -78,8 +107,8 @@ Walk::VertexStep Walk::at_vertex(Index v, Walker& w) {
     }
     return VertexStep::stuck;
   }
-  w.face = face_of(best_corner);
-  w.bary = corner_bary(corner_of(best_corner));
+  w.face = best_start.face;
+  w.bary = best_start.bary;
   w.position = pv;
   w.entry = kInvalidIndex;
   adopt_own(w);
