@@ -71,6 +71,8 @@ def run_mesh(args, path):
                str(args.hausdorff_samples), "--stats", stats, "--quiet"]
         if args.feature_angle is not None:
             cmd += ["--feature-angle", str(args.feature_angle)]
+        if args.method is not None:
+            cmd += ["--method", args.method]
         if args.cvt_tolerance is not None:
             cmd += ["--cvt-tolerance", str(args.cvt_tolerance)]
         start = time.monotonic()
@@ -257,6 +259,7 @@ def main():
     ap.add_argument("--markdown", help="write the aggregate here ('-': stdout)")
     ap.add_argument("--compare", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin",
                                                       "gsp-cvt-compare"))
+    ap.add_argument("--method", choices=("cvt", "edges"), help="gsp-cvt's --method (default: gsp-cvt's default)")
     ap.add_argument("--cvt-tolerance", type=float, help="gsp-cvt's --tolerance (default: gsp-cvt's default)")
     ap.add_argument("--feature-angle", type=float, help="gsp-cvt's --feature-angle (default: gsp-cvt's default)")
     ap.add_argument("--timeout", type=float, default=300, help="seconds per mesh (default 300)")

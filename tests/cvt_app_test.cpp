@@ -98,6 +98,27 @@ TEST(CvtApp, EdgeLengthAndGlb) {
   EXPECT_GT(mesh.mesh.num_faces(), 100u);
 }
 
+// --method edges: edge operations instead of the CVT, the count asked for within 10%, the
+// component reported as remeshed by them, no CVT iterations.
+TEST(CvtApp, MethodEdges) {
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.ply";
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 600 --method edges --hausdorff-samples 5000 -o " +
+                              quote(out.string()) + " --stats -",
+                          dir, kRemeshLimit);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue stats = parse_json(r.out);
+  EXPECT_EQ(stats["settings"]["method"].str, "edges");
+  EXPECT_EQ(stats["result"]["iterations"].num, 0);
+  EXPECT_TRUE(stats["components"].items.at(0)["by_edge_operations"].b);
+  EXPECT_EQ(stats["components"].items.at(0)["edge_failure"].str, "");
+  EXPECT_EQ(stats["topology"]["output"]["euler_characteristic"].num, -6);
+  EXPECT_TRUE(stats["topology"]["output"]["manifold"].b);
+  EXPECT_GE(stats["quality"]["min_angle"].num, 20);
+  const io::ReadResult mesh = io::read_mesh(out.string());
+  EXPECT_NEAR(double(mesh.mesh.num_vertices()), 600.0, 60.0);
+}
+
 // Fewer vertices than a component is remeshed with: the remesh has 20, and stderr says why.
 TEST(CvtApp, TooFewVerticesAreRaisedAndSaid) {
   ScratchDir dir("cvt");
@@ -229,6 +250,9 @@ TEST(CvtApp, UsageErrorsExit2) {
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --edge-length abc" + o, dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 -o " + quote((dir / "r.xyz").string()), dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --regions r.txt" + o, dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method lloyd" + o, dir).exit_code, 2);
+  // Edge operations make no regions.
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method edges --regions r.ply" + o, dir).exit_code, 2);
   EXPECT_FALSE(fs::exists(dir / "r.obj"));
 }
 

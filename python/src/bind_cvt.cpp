@@ -75,8 +75,9 @@ Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, c
 
 py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& vertices, const py::object& edge_length,
                  int iterations, std::uint64_t seed, bool flip, bool smooth, double feature_angle, unsigned threads,
-                 const py::object& progress) {
+                 const py::object& progress, const std::string& method) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
+  const cvt::RemeshMethod how = cvt::remesh_method(method);
   const cvt::CvtOptions o =
       cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, threads, progress, "vertices");
   cvt::SurfaceRemeshResult r;
@@ -84,6 +85,7 @@ py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& ver
     py::gil_scoped_release nogil;
     cvt::SurfaceRemeshOptions so;
     so.cvt = o;
+    so.method = how;
     so.remesh.flip_edges = flip;
     so.remesh.smooth = smooth;
     r = cvt::remesh_surface(mesh, so);
@@ -131,7 +133,7 @@ every run, see gsp-cvt --threads). progress(fraction) is called per iteration; C
   m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("vertices") = py::none(),
         py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u, py::arg("flip") = true,
         py::arg("smooth") = true, py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
-        py::arg("threads") = 0u, py::arg("progress") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(), py::arg("method") = "cvt",
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
@@ -145,7 +147,10 @@ remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. featur
 kept in the remesh as chains of edges with their corners as vertices (gsp-cvt --feature-angle).
 threads: of the propagations (0 = automatic, where ties make large meshes vary slightly from
 run to run; 1 = the same output every run); components are remeshed side by side on them, with
-the one-thread result. progress(fraction) per Lloyd iteration; Ctrl-C stops it.)");
+the one-thread result. progress(fraction) per Lloyd iteration; Ctrl-C stops it.
+method: "cvt" (default) or "edges": edge operations first (several times faster, no CVT;
+the CVT where that remesh is not kept or is below 20 degrees), as gsp-cvt --method;
+ValueError for other names.)");
 }
 
 }  // namespace gsp::python

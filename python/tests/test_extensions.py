@@ -99,6 +99,24 @@ def test_remesh_is_manifold(fertility):
     assert len(V2) - len(directed) // 2 + len(F2) == -6
 
 
+def test_remesh_by_edge_operations(fertility):
+    V, F = fertility
+    V2, F2 = gsp.remesh(V, F, vertices=800, method="edges")
+    assert 720 < len(V2) < 880                           # the count asked for, within 10%
+    e = np.concatenate([F2[:, [0, 1]], F2[:, [1, 2]], F2[:, [2, 0]]])
+    directed = {tuple(x) for x in e.tolist()}
+    assert len(directed) == len(e) and all((b, a) in directed for a, b in directed)
+    assert len(V2) - len(directed) // 2 + len(F2) == -6  # genus 4 kept
+    a, b, c = (V2[F2[:, k]] for k in range(3))
+    def angle(p, q, r):
+        u, v = q - p, r - p
+        cos = np.einsum('ij,ij->i', u, v) / (np.linalg.norm(u, axis=1) * np.linalg.norm(v, axis=1))
+        return np.degrees(np.arccos(np.clip(cos, -1, 1)))
+    assert min(angle(a, b, c).min(), angle(b, c, a).min(), angle(c, a, b).min()) >= 20
+    with pytest.raises(ValueError, match="edges"):
+        gsp.remesh(V, F, vertices=800, method="isotropic")
+
+
 def test_cvt_labels(fertility):
     V, F = fertility
     c = gsp.cvt(V, F, sites=200, iterations=5)

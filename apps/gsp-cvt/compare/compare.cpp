@@ -37,6 +37,7 @@ struct Options {
   std::size_t vertices = 0;
   int cvt_iterations = 50, cgal_iterations = 5, count_runs = 3;
   double feature_angle = 0;
+  std::string method = "cvt";
   double cvt_tolerance = cvt::CvtOptions().tolerance;
   std::size_t hausdorff_samples = 200000;
   cli::LoadOptions load;
@@ -119,6 +120,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   so.cvt.max_iterations = o.cvt_iterations;
   so.cvt.tolerance = o.cvt_tolerance;
   so.cvt.feature_angle = o.feature_angle;
+  so.method = cvt::remesh_method(o.method);
   const auto t0 = Clock::now();
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
   row.mesh = r.mesh;
@@ -146,6 +148,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
     j["retries"] = c.retries;
     j["grown"] = c.grown;
     j["by_edge_operations"] = c.by_edge_operations;
+    j["edge_failure"] = c.edge_failure;
     row.components.push_back(std::move(j));
   }
   return row;
@@ -233,6 +236,8 @@ int main(int argc, char** argv) {
         app.add_option("--cvt-tolerance", o.cvt_tolerance, "gsp-cvt's --tolerance (default: gsp-cvt's)")
             ->check(CLI::NonNegativeNumber);
         app.add_option("--feature-angle", o.feature_angle, "gsp-cvt's --feature-angle (default 0: off)");
+        app.add_option("--method", o.method, "gsp-cvt's --method (cvt or edges; default cvt)")
+            ->check(CLI::IsMember({"cvt", "edges"}));
         app.add_option("--cgal-iterations", o.cgal_iterations, "CGAL remeshing iterations (default 5)");
         app.add_option("--count-runs", o.count_runs, "CGAL runs to match the vertex count (default 3; the last is timed)")
             ->check(CLI::PositiveNumber);

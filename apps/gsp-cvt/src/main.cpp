@@ -25,7 +25,7 @@ namespace {
 using namespace gsp;
 
 struct Options {
-  std::string input, output, regions, edge_length, init = "poisson";
+  std::string input, output, regions, edge_length, init = "poisson", method = "cvt";
   std::size_t vertices = 0, faces_per_site = cvt::CvtOptions{}.min_faces_per_site;
   int iterations = 50;
   double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
@@ -44,6 +44,10 @@ void add_options(CLI::App& app, Options& o) {
   app.add_option("--edge-length", o.edge_length,
                  "target edge length: model units, or \"1%\" of the bounding-box diagonal")
       ->type_name("L");
+  app.add_option("--method", o.method,
+                 "cvt (default: Lloyd iterations with GSP, the restricted Delaunay dual; regions) or edges (splits, "
+                 "collapses, flips and smoothing on the surface, several times faster; the CVT where that fails)")
+      ->check(CLI::IsMember({"cvt", "edges"}));
   app.add_option("--iterations", o.iterations, "Lloyd iteration cap (default 50)")->check(CLI::NonNegativeNumber);
   app.add_option("--tolerance", o.tolerance, "stop when the energy's relative decrease is below this (default 1e-4)")
       ->check(CLI::NonNegativeNumber);
@@ -100,6 +104,7 @@ void run(cli::Context& ctx, const Options& o) {
                                                  io::Format::gltf};
   cli::output_format(o.output, meshes);
   if (!o.regions.empty()) cli::output_format(o.regions, meshes, "--regions");
+  if (!o.regions.empty() && o.method != "cvt") throw cli::UsageError("--regions needs --method cvt (edge operations make no regions)");
 
   const cli::LoadedMesh in = cli::load_input(ctx, o.input, o.load);
   cvt::SurfaceRemeshOptions so;
@@ -118,7 +123,8 @@ void run(cli::Context& ctx, const Options& o) {
   co.fix_regions = !o.no_fix;
   co.planar_flips = !o.no_planar_flips;
   co.feature_angle = o.feature_angle;
-  ctx.settings()["method"] = "lloyd-gsp";
+  so.method = cvt::remesh_method(o.method);
+  ctx.settings()["method"] = o.method == "cvt" ? "lloyd-gsp" : "edges";
   if (o.vertices) ctx.settings()["vertices"] = o.vertices;
   else ctx.settings()["edge_length"] = co.edge_length;
   ctx.settings()["max_iterations"] = o.iterations;

@@ -117,6 +117,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
     j["reason"] = c.reason;
     j["by_edge_operations"] = c.by_edge_operations;
     j["cvt_failure"] = c.cvt_failure;
+    j["edge_failure"] = c.edge_failure;
     list.push_back(std::move(j));
   }
 }
@@ -131,11 +132,21 @@ void note_kept_components(cli::Context& ctx, const cvt::SurfaceRemeshResult& r) 
   if (retried)
     ctx.note(std::to_string(retried) + " components remeshed from other initial sites (the first remesh did not have the "
                                        "component's topology)");
-  std::size_t by_edges = 0;
-  for (const cvt::ComponentReport& c : r.components) by_edges += c.by_edge_operations && c.outcome == cvt::ComponentOutcome::remeshed;
+  // With --method edges the edge operations come first: said only where the CVT was tried
+  // before them (cvt_failure), and the other way round (edge_failure).
+  std::size_t by_edges = 0, by_cvt = 0;
+  for (const cvt::ComponentReport& c : r.components) {
+    if (c.outcome != cvt::ComponentOutcome::remeshed) continue;
+    by_edges += c.by_edge_operations && !c.cvt_failure.empty();
+    by_cvt += !c.by_edge_operations && !c.edge_failure.empty();
+  }
   if (by_edges)
-    ctx.note(std::to_string(by_edges) + " components remeshed by edge operations (no CVT dual had the component's "
-                                        "topology; their vertices belong to no region)");
+    ctx.note(std::to_string(by_edges) + " components remeshed by edge operations after the CVT (cvt_failure in --stats "
+                                        "says why: mostly no dual with the component's topology; their vertices belong "
+                                        "to no region)");
+  if (by_cvt)
+    ctx.note(std::to_string(by_cvt) + " components remeshed by the CVT (their remesh by edge operations was not kept; "
+                                      "edge_failure in --stats says why)");
   std::size_t dropped = 0;
   for (const cvt::ComponentReport& c : r.components) dropped += c.features_dropped && c.outcome == cvt::ComponentOutcome::remeshed;
   if (dropped)

@@ -21,8 +21,8 @@ struct ComponentRemesh {
   CvtStats cvt_stats;                // the last attempt's (its phase times: `timings` below)
   RemeshStats remesh_stats;
   TriangleMesh mesh;
-  // No CVT dual had the component's topology, and `mesh` is its remesh by edge operations
-  // instead (edge_remesh.hpp; SurfaceRemeshOptions::edge_operations): no regions, no energy.
+  // `mesh` is the component's remesh by edge operations (edge_remesh.hpp): first
+  // (RemeshMethod::edges), or where no CVT dual had its topology: no regions, no energy.
   bool by_edge_operations = false;
   // The CVT's phase times summed over every attempt (without features, from other initial
   // sites, grown), kept or not: where the component's time went.
@@ -36,6 +36,8 @@ struct ComponentRemesh {
 // retry and time figures; keeps nothing of the working mesh. A gsp::Error is reported in the
 // result, anything else thrown. Where no attempt has the topology, the component is remeshed
 // by edge operations (with SurfaceRemeshOptions::edge_operations) and kept if that has it.
+// With RemeshMethod::edges the edge operations come first, the CVT only where their remesh is
+// refused or below 20 degrees.
 ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co, const SurfaceRemeshOptions& options,
                                  ComponentReport& rep, bool grow = false);
 

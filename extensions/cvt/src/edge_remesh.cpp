@@ -76,6 +76,12 @@ class Remesher {
     }
   }
 
+  // The spacing for the next rounds.
+  void set_length(double length) {
+    high_ = 4.0 / 3.0 * length;
+    low_ = 4.0 / 5.0 * length;
+  }
+
   // One round; false where the splits reached the vertex cap.
   bool round() {
     if (!split_long_edges()) return false;
@@ -169,10 +175,12 @@ class Remesher {
     const Mesh::VertexHandle from = m_.from_vertex_handle(h), to = m_.to_vertex_handle(h);
     const int degree = feature_degree(from);
     if (degree != 0 && (corner(from) || !m_.property(feature_, m_.edge_handle(h)))) return false;
-    if (!m_.is_collapse_ok(h)) return false;
     const P target = m_.point(to);
+    // The length limit first: it refuses most collapses, and OpenMesh's link condition (half
+    // of the remesh's time on demosthenes when asked first) is dearer.
     for (Mesh::VertexHandle w : m_.vv_range(from))
       if (limit_length && w != to && (m_.point(w) - target).norm() > high_) return false;
+    if (!m_.is_collapse_ok(h)) return false;
     for (Mesh::FaceHandle f : m_.vf_range(from)) {
       Mesh::VertexHandle x[3];
       int k = 0;
@@ -427,7 +435,7 @@ TriangleMesh to_triangle_mesh(const Mesh& m) {
 
 TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
                                        double target_length, double feature_angle_deg, int iterations,
-                                       std::size_t max_vertices, EdgeRemeshStats* stats) {
+                                       std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats* stats) {
   Mesh m;
   m.request_vertex_status();
   m.request_edge_status();
@@ -447,8 +455,19 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   }
   // Vertices of no face (none in a component) would stay isolated: dropped by the export below.
   r.mark_features(input, feature_angle_deg, target_length);
-  for (int i = 0; i < iterations; ++i)
+  // Edges within [4/5, 4/3] of a spacing L average below L on a curved or bounded surface, and
+  // crease lines add vertices: L from the area alone gave 10-40% more vertices than asked for
+  // (spot 5,259, demosthenes 6,987 at 5,000). The count goes as 1 / L^2, so after each of the
+  // first rounds the spacing is scaled by sqrt(count / target) and the later rounds settle.
+  double length = target_length;
+  for (int i = 0; i < iterations; ++i) {
     if (!r.round()) return {};
+    if (target_vertices > 0 && i + 4 < iterations) {
+      m.garbage_collection();
+      length *= std::clamp(std::sqrt(double(m.n_vertices()) / double(target_vertices)), 0.5, 2.0);
+      r.set_length(length);
+    }
+  }
   r.clean_small_angles(5);
   m.garbage_collection();
 
@@ -460,7 +479,7 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   const ClosestPointIndex index(out);
   Index hint = kInvalidIndex;
   for (const Vec3& p : input.positions)
-    if (!index.within(p, 2 * target_length, hint)) return {};
+    if (!index.within(p, 2 * std::max(length, target_length), hint)) return {};
   return out;
 }
 

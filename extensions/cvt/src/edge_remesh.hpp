@@ -31,9 +31,11 @@ struct EdgeRemeshStats {
 // feature edge is flipped. Returns an empty mesh where OpenMesh refuses one of the input's
 // faces, the splits would pass max_vertices, or an input vertex ends farther than two
 // spacings from the remesh (a fold onto one side of a thin part); the caller then keeps what
-// it had.
+// it had. target_vertices > 0: the spacing is corrected in the first rounds so that the remesh
+// ends near that many vertices.
 TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
                                        double target_length, double feature_angle_deg, int iterations,
-                                       std::size_t max_vertices, EdgeRemeshStats* stats = nullptr);
+                                       std::size_t max_vertices, std::size_t target_vertices = 0,
+                                       EdgeRemeshStats* stats = nullptr);
 
 }  // namespace gsp::cvt::detail

@@ -127,6 +127,14 @@ const char* outcome_name(ComponentOutcome o) {
   return "?";
 }
 
+const char* method_name(RemeshMethod m) { return m == RemeshMethod::edges ? "edges" : "cvt"; }
+
+RemeshMethod remesh_method(const std::string& name) {
+  if (name == "cvt") return RemeshMethod::cvt;
+  if (name == "edges") return RemeshMethod::edges;
+  throw InvalidInput("remesh method must be 'cvt' or 'edges', not '" + name + "'");
+}
+
 std::size_t SurfaceRemeshResult::remeshed() const {
   return std::size_t(std::count_if(components.begin(), components.end(),
                                    [](const ComponentReport& c) { return c.outcome == ComponentOutcome::remeshed; }));

@@ -23,9 +23,25 @@
 
 namespace gsp::cvt {
 
+// How each component is remeshed (docs/cvt.md, "Two methods").
+enum class RemeshMethod {
+  // The CVT's restricted Delaunay dual (regions, sites and energy reported); edge operations
+  // only where no dual has the component's topology (SurfaceRemeshOptions::edge_operations).
+  cvt,
+  // Edge operations first (splits, collapses, flips, tangential smoothing, projection; then the
+  // dual's post-pass), several times faster than the CVT; the CVT where that remesh is not
+  // kept, or is below 20 degrees (then the one with the larger smallest angle is kept). No
+  // regions for components remeshed by edge operations.
+  edges,
+};
+
+const char* method_name(RemeshMethod m);   // "cvt", "edges"
+RemeshMethod remesh_method(const std::string& name);   // the inverse; InvalidInput for other names
+
 struct SurfaceRemeshOptions {
   CvtOptions cvt;   // sites: the budget of the whole mesh; or edge_length, for every component
   RemeshOptions remesh;
+  RemeshMethod method = RemeshMethod::cvt;
   // The fewest sites a component is remeshed with: the dual of fewer regions cannot be trusted
   // to have the component's topology (a closed surface needs at least 4, a torus many more).
   // A component whose share of the budget is smaller gets this many when it has at least as
@@ -96,10 +112,13 @@ struct ComponentReport {
   // count).
   std::size_t grown = 0;
   std::size_t output_vertices = 0, output_faces = 0;
-  // Remeshed by edge operations (SurfaceRemeshOptions::edge_operations) because no CVT dual
-  // had the topology; cvt_failure says what the last dual lacked. No regions then.
+  // Remeshed by edge operations: first (RemeshMethod::edges), or after the CVT, whose failure
+  // (or smaller smallest angle) cvt_failure then says. No regions then.
   bool by_edge_operations = false;
   std::string cvt_failure;
+  // With RemeshMethod::edges: why the remesh by edge operations was not kept (the component
+  // then had the CVT); empty where it was, or was not tried first.
+  std::string edge_failure;
   ComponentOutcome outcome = ComponentOutcome::remeshed;
   std::string reason;                      // empty when remeshed
   double cvt_seconds = 0, remesh_seconds = 0;
