@@ -22,7 +22,7 @@ Vec3 SurfacePoint::position(const TriangleMesh& mesh) const {
   return b[0] * mesh.positions[t[0]] + b[1] * mesh.positions[t[1]] + b[2] * mesh.positions[t[2]];
 }
 
-std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x) {
+bool affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x, double min_sine2, std::array<double, 3>& out) {
   const Triangle& t = mesh.triangles[face];
   const Vec3 a = mesh.positions[t[0]], e0 = mesh.positions[t[1]] - a, e1 = mesh.positions[t[2]] - a, e2 = x - a;
   // From cross products (the sub-triangles' signed areas), not from the Gram determinant
@@ -31,9 +31,16 @@ std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, V
   // is about eps A.
   const Vec3 n = cross(e0, e1);
   const double nn = dot(n, n);
-  if (!(nn > 0)) return {0, 0, 0};
+  if (!(nn > min_sine2 * dot(e0, e0) * dot(e1, e1))) return false;
   const double b1 = dot(cross(e2, e1), n) / nn, b2 = dot(cross(e0, e2), n) / nn;
-  return {1 - b1 - b2, b1, b2};
+  out = {1 - b1 - b2, b1, b2};
+  return true;
+}
+
+std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x) {
+  std::array<double, 3> b{0, 0, 0};
+  affine_coordinates(mesh, face, x, 0.0, b);
+  return b;
 }
 
 }  // namespace gsp

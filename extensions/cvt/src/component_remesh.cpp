@@ -44,9 +44,10 @@ std::size_t orient_by_majority(TriangleMesh& m) {
 // no larger share of angles below 30 degrees than the input: never worse than keeping the input
 // (as for a small component raised above its share), which a modelled part's well-shaped input
 // can be against a remesh with needles at a handle thinner than the spacing. Empty where not;
-// `why` says why.
+// `why` says why. `min_angle`: the kept remesh's smallest angle (degrees).
 TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, std::size_t sites, const CvtOptions& co,
-                                    const SurfaceRemeshOptions& options, RemeshStats& remesh_stats, std::string& why) {
+                                    const SurfaceRemeshOptions& options, RemeshStats& remesh_stats, std::string& why,
+                                    double& min_angle) {
   // N = 2 A / (sqrt(3) L^2), as CvtOptions::edge_length converts it.
   const double length = std::sqrt(2 * area / (std::sqrt(3.0) * double(std::max<std::size_t>(sites, 1))));
   const ClosestPointIndex surface(oriented);
@@ -85,6 +86,7 @@ TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, s
           " against " + fixed2(100 * input_q.below_30, "%") + ")";
     return {};
   }
+  min_angle = q.min_angle;
   return edges;
 }
 
@@ -100,9 +102,10 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
     // A remesh by edge operations (empty where edge_operations_remesh's checks refuse it), and
     // taking one as the component's.
     RemeshStats edge_stats;
+    double edge_angle = 0;   // the last kept one's smallest angle
     auto edge_remesh = [&](std::string& why) {
       const auto t0 = Clock::now();
-      TriangleMesh edges = edge_operations_remesh(oriented, rep.area, n, co, options, edge_stats, why);
+      TriangleMesh edges = edge_operations_remesh(oriented, rep.area, n, co, options, edge_stats, why, edge_angle);
       rep.remesh_seconds += seconds_since(t0);
       return edges;
     };
@@ -124,7 +127,7 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
     if (edges_first) {
       TriangleMesh edges = edge_remesh(rep.edge_failure);
       if (!edges.triangles.empty()) {
-        held_angle = measure_mesh_quality(edges).min_angle;
+        held_angle = edge_angle;
         if (held_angle >= kMinAngleDeg) {
           take_edges(std::move(edges));
           return out;

@@ -233,12 +233,6 @@ class Remesher {
     if (any) m_.garbage_collection();
   }
 
-  P face_normal(Mesh::FaceHandle f) const {
-    auto it = m_.cfv_begin(f);
-    const P a = m_.point(*it++), b = m_.point(*it++), c = m_.point(*it);
-    return normal_of(a, b, c);
-  }
-
   int feature_degree(Mesh::VertexHandle v) const {
     int n = 0;
     for (Mesh::EdgeHandle e : m_.ve_range(v)) n += m_.property(feature_, e);

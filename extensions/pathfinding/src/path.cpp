@@ -1,5 +1,7 @@
 #include <gsp/pathfinding/path.hpp>
 
+#include <gsp/closest_point.hpp>
+
 #include <algorithm>
 
 namespace gsp::pathfinding {
@@ -19,21 +21,11 @@ double polyline_length(const std::vector<PathPoint>& points) {
 std::array<double, 3> weights_in(const TriangleMesh& mesh, Index f, Vec3 x) {
   std::array<double, 3> b = affine_coordinates(mesh, f, x);
   if (b[0] == 0 && b[1] == 0 && b[2] == 0) {
-    // A face of no area is a segment, its longest edge: x's weights on it (corner 0's alone,
-    // whatever x, put the log cabin STL's path end 33.6 units from where its weights say).
+    // A face of no area: x's weights on its nearest edge (closest_point_on_triangle's answer
+    // there). Corner 0's alone, whatever x, put the log cabin STL's path end 33.6 units from
+    // where its weights said.
     const Triangle& t = mesh.triangles[f];
-    int i = 0;
-    double longest = -1;
-    for (int k = 0; k < 3; ++k)
-      if (const double l = distance(mesh.positions[t[k]], mesh.positions[t[(k + 1) % 3]]); l > longest) longest = l, i = k;
-    const int j = (i + 1) % 3;
-    const Vec3 a = mesh.positions[t[i]], d = mesh.positions[t[j]] - a;
-    const double dd = dot(d, d);
-    const double s = dd > 0 ? std::clamp(dot(x - a, d) / dd, 0.0, 1.0) : 0.0;
-    b = {0, 0, 0};
-    b[i] = 1 - s;
-    b[j] = s;
-    return b;
+    return closest_point_on_triangle(x, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
   }
   for (double& w : b) w = std::max(0.0, w);
   const double sum = b[0] + b[1] + b[2];

@@ -73,13 +73,7 @@ class Walk {
   // depending on the model's scale, and at 10x its size the walk could not enter the needle
   // the field went through (a path 3.5% long).
   bool bary_of(Index f, Vec3 x, Bary& b) const {
-    const Triangle& t = mesh_.triangles[f];
-    const Vec3 a = mesh_.positions[t[0]];
-    const Vec3 e0 = mesh_.positions[t[1]] - a, e1 = mesh_.positions[t[2]] - a;
-    const Vec3 n = gsp::cross(e0, e1);
-    if (!(dot(n, n) > 1e-24 * dot(e0, e0) * dot(e1, e1)) || repeats_vertex(t)) return false;
-    b = affine_coordinates(mesh_, f, x);
-    return true;
+    return !repeats_vertex(mesh_.triangles[f]) && affine_coordinates(mesh_, f, x, 1e-24, b);
   }
   bool usable(Index f) const {
     Bary b;

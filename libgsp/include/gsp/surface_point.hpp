@@ -42,6 +42,9 @@ struct SurfacePoint {
 // corners 0, 1, 2: they sum to 1, and are all >= 0 where the projection lies in the face
 // (walks over faces and clamped weights build on this). Zeros for a face of no area.
 std::array<double, 3> affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x);
+// The same, false (and `out` untouched) where the face has no plane to within min_sine2: the
+// squared sine of its angle at corner 0 at most that (0: no area at all).
+bool affine_coordinates(const TriangleMesh& mesh, Index face, Vec3 x, double min_sine2, std::array<double, 3>& out);
 
 // Weights >= 0 that sum to 1 within 1e-6: what a face point handed to the library (a source, a
 // path end point) must have. NaN fails.
