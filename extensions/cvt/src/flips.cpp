@@ -8,45 +8,55 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
 namespace gsp::cvt::detail {
 
-namespace {
+DirectedEdges::DirectedEdges(const TriangleMesh& m) {
+  map.reserve(3 * m.num_faces());
+  for (Index f = 0; f < m.num_faces(); ++f)
+    for (Index i = 0; i < 3; ++i) map[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
+  unique = map.size() == 3 * m.num_faces();
+}
 
-// Directed edge (a, b) -> 3 * face + corner of a, kept up to date through flips.
-struct DirectedEdges {
-  std::unordered_map<std::uint64_t, Index> map;
+bool DirectedEdges::exists(Index a, Index b) const { return map.count(edge_key(a, b)) || map.count(edge_key(b, a)); }
 
-  explicit DirectedEdges(const TriangleMesh& m) {
-    map.reserve(3 * m.num_faces());
-    for (Index f = 0; f < m.num_faces(); ++f)
-      for (Index i = 0; i < 3; ++i) map[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = 3 * f + i;
+void DirectedEdges::flip(TriangleMesh& m, Index f, Index g, Index a, Index b, Index c, Index d) {
+  for (Index k = 0; k < 3; ++k) {
+    map.erase(edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
+    map.erase(edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
   }
-  bool exists(Index a, Index b) const { return map.count(edge_key(a, b)) || map.count(edge_key(b, a)); }
-  // Faces f = (a, b, c) and g = (b, a, d) become (a, d, c) and (d, b, c).
-  void flip(TriangleMesh& m, Index f, Index g, Index a, Index b, Index c, Index d) {
-    for (Index k = 0; k < 3; ++k) {
-      map.erase(edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3]));
-      map.erase(edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3]));
-    }
-    m.triangles[f] = {a, d, c};
-    m.triangles[g] = {d, b, c};
-    for (Index k = 0; k < 3; ++k) {
-      map[edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
-      map[edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
-    }
+  m.triangles[f] = {a, d, c};
+  m.triangles[g] = {d, b, c};
+  for (Index k = 0; k < 3; ++k) {
+    map[edge_key(m.triangles[f][k], m.triangles[f][(k + 1) % 3])] = 3 * f + k;
+    map[edge_key(m.triangles[g][k], m.triangles[g][(k + 1) % 3])] = 3 * g + k;
   }
-};
-
-}  // namespace
+}
 
 std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int max_passes,
-                             const std::vector<bool>* locked) {
+                             const std::vector<bool>* locked, const std::vector<bool>* touched, bool* converged,
+                             DirectedEdges* edges) {
   const double cos_limit = std::cos(max_normal_angle_deg * 3.14159265358979323846 / 180.0);
-  DirectedEdges directed(m);
+  std::optional<DirectedEdges> own;
+  DirectedEdges& directed = edges ? *edges : own.emplace(m);
+  // With `touched`: per vertex, the last pass in which it moved (0: before the call) or was a
+  // corner of a flip. An edge is examined in pass k when a corner of its quad has a mark of
+  // k - 1 or later: a quad examined in pass k - 1 and not changed since would be refused
+  // again. A flip of (a, b) marks a and b: every quad it changed holds one of them (the new
+  // faces are (a, d, c) and (d, b, c)), and so does every quad whose flip the edge (a, b)
+  // blocked.
+  constexpr int kNever = -2;
+  std::vector<int> mark;
+  if (touched) {
+    mark.assign(m.num_vertices(), kNever);
+    for (Index v = 0; v < m.num_vertices() && v < touched->size(); ++v)
+      if ((*touched)[v]) mark[v] = 0;
+  }
   std::size_t flips = 0;
+  if (converged) *converged = false;
   for (int pass = 0; pass < max_passes; ++pass) {
     std::size_t this_pass = 0;
     for (Index f = 0; f < m.num_faces(); ++f)
@@ -59,6 +69,7 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
         const Index g = it->second / 3, j = it->second % 3;
         if (g == f) continue;
         const Index d = m.triangles[g][(j + 2) % 3];
+        if (touched && std::max({mark[a], mark[b], mark[c], mark[d]}) < pass - 1) continue;
         if (d == c || directed.exists(c, d)) continue;
         const Vec3 pa = m.positions[a], pb = m.positions[b], pc = m.positions[c], pd = m.positions[d];
         if (angle_at(pc, pa, pb) + angle_at(pd, pb, pa) <= 3.14159265358979323846 + 1e-12) continue;
@@ -73,10 +84,14 @@ std::size_t improve_by_flips(TriangleMesh& m, double max_normal_angle_deg, int m
         const Vec3 n = n1 + n2;
         if (dot(m1, n) <= 0 || dot(m2, n) <= 0) continue;
         directed.flip(m, f, g, a, b, c, d);
+        if (touched) mark[a] = mark[b] = pass;
         ++this_pass;
       }
     flips += this_pass;
-    if (this_pass == 0) break;
+    if (this_pass == 0) {
+      if (converged) *converged = true;
+      break;
+    }
   }
   return flips;
 }

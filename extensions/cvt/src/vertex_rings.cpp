@@ -7,7 +7,7 @@
 
 namespace gsp::cvt::detail {
 
-void VertexRings::rebuild(const TriangleMesh& m) {
+void VertexRings::rebuild_rings(const TriangleMesh& m) {
   const std::size_t V = m.num_vertices();
   corner_begin.assign(V + 1, 0);
   for (const Triangle& t : m.triangles)
@@ -17,6 +17,11 @@ void VertexRings::rebuild(const TriangleMesh& m) {
   std::vector<Index> fill(corner_begin.begin(), corner_begin.end() - 1);
   for (Index f = 0; f < m.num_faces(); ++f)
     for (Index i = 0; i < 3; ++i) corners[fill[m.triangles[f][i]]++] = 3 * f + i;
+}
+
+void VertexRings::rebuild(const TriangleMesh& m) {
+  const std::size_t V = m.num_vertices();
+  rebuild_rings(m);
   std::unordered_map<std::uint64_t, Index> directed;
   for (Index f = 0; f < m.num_faces(); ++f)
     for (Index i = 0; i < 3; ++i) directed[edge_key(m.triangles[f][i], m.triangles[f][(i + 1) % 3])] = f;

@@ -22,8 +22,12 @@ struct VertexRings {
   };
 
   explicit VertexRings(const TriangleMesh& m) { rebuild(m); }
-  // Flips change the rings and the boundary links; called after them.
+  // The rings and the boundary links, from the triangles.
   void rebuild(const TriangleMesh& m);
+  // The rings only: after improve_by_flips' flips on a mesh where no directed edge is in two
+  // faces (DirectedEdges::unique), which change no boundary edge (a flip removes an edge with
+  // its only two faces and makes one with two faces), so the links stay.
+  void rebuild_rings(const TriangleMesh& m);
 
   Range around(Index v) const { return {corners.data() + corner_begin[v], corners.data() + corner_begin[v + 1]}; }
   bool empty(Index v) const { return corner_begin[v] == corner_begin[v + 1]; }
