@@ -71,6 +71,8 @@ def run_mesh(args, path):
                str(args.hausdorff_samples), "--stats", stats, "--quiet"]
         if args.feature_angle is not None:
             cmd += ["--feature-angle", str(args.feature_angle)]
+        if args.cone_angle is not None:
+            cmd += ["--cone-angle", str(args.cone_angle)]
         if args.method is not None:
             cmd += ["--method", args.method]
         if args.cvt_tolerance is not None:
@@ -262,6 +264,7 @@ def main():
     ap.add_argument("--method", choices=("cvt", "edges"), help="gsp-cvt's --method (default: gsp-cvt's default)")
     ap.add_argument("--cvt-tolerance", type=float, help="gsp-cvt's --tolerance (default: gsp-cvt's default)")
     ap.add_argument("--feature-angle", type=float, help="gsp-cvt's --feature-angle (default: gsp-cvt's default)")
+    ap.add_argument("--cone-angle", type=float, help="gsp-cvt's --cone-angle (default: gsp-cvt's default)")
     ap.add_argument("--timeout", type=float, default=300, help="seconds per mesh (default 300)")
     ap.add_argument("--hausdorff-samples", type=int, default=50000)
     ap.add_argument("--only", nargs="*", default=[], help="run only meshes whose name contains one of these")

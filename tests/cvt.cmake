@@ -33,3 +33,4 @@ gsp_test(cvt_edge_remesh_test SOURCES cvt_edge_remesh_test.cpp DEPS gsp::cvt gsp
 target_include_directories(cvt_edge_remesh_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
 gsp_test(cvt_incremental_flips_test SOURCES cvt_incremental_flips_test.cpp DEPS gsp::cvt)
 target_include_directories(cvt_incremental_flips_test PRIVATE ${PROJECT_SOURCE_DIR}/extensions/cvt/src)
+gsp_test(cvt_spike_tips_test SOURCES cvt_spike_tips_test.cpp DEPS gsp::cvt)

@@ -251,6 +251,7 @@ TEST(CvtApp, UsageErrorsExit2) {
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 -o " + quote((dir / "r.xyz").string()), dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --regions r.txt" + o, dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method lloyd" + o, dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --cone-angle 400" + o, dir).exit_code, 2);
   // Edge operations make no regions.
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method edges --regions r.ply" + o, dir).exit_code, 2);
   EXPECT_FALSE(fs::exists(dir / "r.obj"));

@@ -24,7 +24,8 @@ struct Cvt {
 
 cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, const py::object& edge_length,
                             int iterations, std::uint64_t seed, const std::string& init, double feature_angle,
-                            unsigned threads, const py::object& progress, const char* count_name) {
+                            double cone_angle, unsigned threads, const py::object& progress,
+                            const char* count_name) {
   if (mesh.num_faces() == 0) throw py::value_error("F is empty: a CVT needs faces");
   if (sites.is_none() == edge_length.is_none())
     throw py::value_error(std::string("give exactly one of ") + count_name + "= and edge_length=");
@@ -43,6 +44,8 @@ cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, c
   o.threads = threads;
   if (!(feature_angle >= 0 && feature_angle <= 180)) throw py::value_error("feature_angle must be in [0, 180] degrees");
   o.feature_angle = feature_angle;
+  if (!(cone_angle >= 0 && cone_angle <= 360)) throw py::value_error("cone_angle must be in [0, 360] degrees");
+  o.cone_angle = cone_angle;
   if (init == "poisson") o.initial = cvt::InitialSites::poisson;
   else if (init == "farthest") o.initial = cvt::InitialSites::farthest;
   else if (init == "random") o.initial = cvt::InitialSites::random;
@@ -56,10 +59,10 @@ cvt::CvtOptions cvt_options(const TriangleMesh& mesh, const py::object& sites, c
 
 Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, const py::object& edge_length,
             int iterations, std::uint64_t seed, const std::string& init, double feature_angle, unsigned threads,
-            const py::object& progress) {
+            const py::object& progress, double cone_angle) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   const cvt::CvtOptions o =
-      cvt_options(mesh, sites, edge_length, iterations, seed, init, feature_angle, threads, progress, "sites");
+      cvt_options(mesh, sites, edge_length, iterations, seed, init, feature_angle, cone_angle, threads, progress, "sites");
   cvt::CvtResult r;
   {
     py::gil_scoped_release nogil;
@@ -75,11 +78,12 @@ Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, c
 
 py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& vertices, const py::object& edge_length,
                  int iterations, std::uint64_t seed, bool flip, bool smooth, double feature_angle, unsigned threads,
-                 const py::object& progress, const std::string& method) {
+                 const py::object& progress, const std::string& method, double cone_angle) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
   const cvt::RemeshMethod how = cvt::remesh_method(method);
   const cvt::CvtOptions o =
-      cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, threads, progress, "vertices");
+      cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, cone_angle, threads, progress,
+                  "vertices");
   cvt::SurfaceRemeshResult r;
   {
     py::gil_scoped_release nogil;
@@ -122,18 +126,21 @@ void bind_cvt(py::module_& m) {
   m.def("cvt", &run_cvt, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sites") = py::none(),
         py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u,
         py::arg("init") = "poisson", py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
-        py::arg("threads") = 0u, py::arg("progress") = py::none(),
+        py::arg("threads") = 0u, py::arg("progress") = py::none(), py::arg("cone_angle") = cvt::CvtOptions{}.cone_angle,
         R"(Geodesic centroidal Voronoi tessellation by Lloyd iterations with GSP: a gsp.Cvt.
 
 Exactly one of sites (count) and edge_length (model units). Regions that are not disks are
 repaired by adding sites, so len(result.sites) may exceed `sites` slightly. feature_angle
 (degrees, 0 = off): crease curves sharper than this get fixed sites at even steps along them
-(counted in `sites`). threads: of the propagations (0 = automatic; 1 = the same result on
+(counted in `sites`). cone_angle (degrees, 0 = off, the default; 240 is a good value): spike
+tips, interior vertices whose angles sum to less than this but not less than half of it, get
+fixed sites too (gsp-cvt --cone-angle). threads: of the propagations (0 = automatic; 1 = the same result on
 every run, see gsp-cvt --threads). progress(fraction) is called per iteration; Ctrl-C stops it.)");
   m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("vertices") = py::none(),
         py::arg("edge_length") = py::none(), py::arg("iterations") = 50, py::arg("seed") = 1u, py::arg("flip") = true,
         py::arg("smooth") = true, py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
         py::arg("threads") = 0u, py::arg("progress") = py::none(), py::arg("method") = "cvt",
+        py::arg("cone_angle") = cvt::CvtOptions{}.cone_angle,
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
@@ -145,6 +152,9 @@ a gsp.RemeshWarning naming it and the reason; ValueError when no component could
 remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. feature_angle
 (degrees, 0 = off): edges whose faces' normals differ by more than this form crease curves,
 kept in the remesh as chains of edges with their corners as vertices (gsp-cvt --feature-angle).
+cone_angle (degrees, 0 = off, the default; 240 is a good value): spike tips (interior vertices
+whose angles sum to less than it, at least half of it) are vertices of the remesh instead of
+being cut off (gsp-cvt --cone-angle).
 threads: of the propagations (0 = automatic, where ties make large meshes vary slightly from
 run to run; 1 = the same output every run); components are remeshed side by side on them, with
 the one-thread result. progress(fraction) per Lloyd iteration; Ctrl-C stops it.

@@ -219,6 +219,18 @@ def test_remesh_keeps_feature_curves():
     assert not all(np.min(np.linalg.norm(V3 - c, axis=1)) < 1e-9 for c in V)
 
 
+def test_remesh_keeps_spike_tips():
+    # A regular tetrahedron: every corner's angles sum to 180 degrees, below cone_angle=240.
+    V = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], float)
+    F = np.array([[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]])
+    V2, _ = gsp.remesh(V, F, vertices=400, threads=1, cone_angle=240)
+    assert all(np.min(np.linalg.norm(V2 - c, axis=1)) < 1e-9 for c in V)
+    V3, _ = gsp.remesh(V, F, vertices=400, threads=1)   # off by default: the corners are cut
+    assert all(np.min(np.linalg.norm(V3 - c, axis=1)) > 0.03 for c in V)
+    with pytest.raises(ValueError, match="cone_angle"):
+        gsp.remesh(V, F, vertices=100, cone_angle=400)
+
+
 def test_feature_angle_out_of_range():
     V, F = _box()
     with pytest.raises(ValueError, match="feature_angle"):

@@ -37,6 +37,7 @@ struct Options {
   std::size_t vertices = 0;
   int cvt_iterations = 50, cgal_iterations = 5, count_runs = 3;
   double feature_angle = 0;
+  double cone_angle = cvt::CvtOptions{}.cone_angle;
   std::string method = "cvt";
   double cvt_tolerance = cvt::CvtOptions().tolerance;
   std::size_t hausdorff_samples = 200000;
@@ -120,6 +121,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   so.cvt.max_iterations = o.cvt_iterations;
   so.cvt.tolerance = o.cvt_tolerance;
   so.cvt.feature_angle = o.feature_angle;
+  so.cvt.cone_angle = o.cone_angle;
   so.method = cvt::remesh_method(o.method);
   const auto t0 = Clock::now();
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
@@ -236,6 +238,7 @@ int main(int argc, char** argv) {
         app.add_option("--cvt-tolerance", o.cvt_tolerance, "gsp-cvt's --tolerance (default: gsp-cvt's)")
             ->check(CLI::NonNegativeNumber);
         app.add_option("--feature-angle", o.feature_angle, "gsp-cvt's --feature-angle (default 0: off)");
+        app.add_option("--cone-angle", o.cone_angle, "gsp-cvt's --cone-angle (default 0: off)")->check(CLI::Range(0.0, 360.0));
         app.add_option("--method", o.method, "gsp-cvt's --method (cvt or edges; default cvt)")
             ->check(CLI::IsMember({"cvt", "edges"}));
         app.add_option("--cgal-iterations", o.cgal_iterations, "CGAL remeshing iterations (default 5)");

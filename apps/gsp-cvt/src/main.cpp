@@ -29,6 +29,7 @@ struct Options {
   std::size_t vertices = 0, faces_per_site = cvt::CvtOptions{}.min_faces_per_site;
   int iterations = 50;
   double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
+  double cone_angle = cvt::CvtOptions{}.cone_angle;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   unsigned threads = 0;
@@ -72,6 +73,11 @@ void add_options(CLI::App& app, Options& o) {
                  "keep sharp features: edges whose faces' normals differ by more than this many degrees form "
                  "curves kept as chains of edges, their corners as vertices (0 = off; default 0)")
       ->check(CLI::Range(0.0, 180.0));
+  app.add_option("--cone-angle", o.cone_angle,
+                 "keep spike tips: an interior vertex whose angles sum to less than this many degrees but at least "
+                 "half of it gets a fixed site, so the tip is a vertex of the remesh instead of being cut off "
+                 "(0 = off, the default; 240 is a good value)")
+      ->check(CLI::Range(0.0, 360.0));
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
   app.add_flag("--no-planar-flips", o.no_planar_flips,
                "keep the working mesh's slivers inside planes (CAD fans) instead of flipping them to Delaunay "
@@ -123,6 +129,7 @@ void run(cli::Context& ctx, const Options& o) {
   co.fix_regions = !o.no_fix;
   co.planar_flips = !o.no_planar_flips;
   co.feature_angle = o.feature_angle;
+  co.cone_angle = o.cone_angle;
   so.method = cvt::remesh_method(o.method);
   ctx.settings()["method"] = o.method == "cvt" ? "lloyd-gsp" : "edges";
   if (o.vertices) ctx.settings()["vertices"] = o.vertices;
@@ -137,6 +144,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["fix_regions"] = co.fix_regions;
   ctx.settings()["planar_flips"] = co.planar_flips;
   ctx.settings()["feature_angle"] = o.feature_angle;
+  ctx.settings()["cone_angle"] = o.cone_angle;
   ctx.settings()["flip_edges"] = !o.no_flip;
   ctx.settings()["smooth"] = !o.no_smooth;
   ctx.settings()["smooth_below"] = o.smooth_below;

@@ -47,6 +47,7 @@ void report_cvt(cli::Context& ctx, const cvt::SurfaceRemeshResult& cvt) {
   ops["feature_sites"] = s.feature_sites;
   ops["feature_curves"] = s.feature_curves;
   ops["short_feature_curves"] = s.short_feature_curves;
+  ops["cone_sites"] = s.cone_sites;
   ops["sites_added"] = s.sites_added;
   ops["sites_relocated"] = s.sites_relocated;
   ops["split_regions"] = s.split_regions;

@@ -170,11 +170,13 @@ ComponentRemesh remesh_component(const TriangleMesh& input, const CvtOptions& co
     CvtResult cvt;
     RemeshResult r;
     bool ok = attempt(cvt, r, out.why);
-    if (!ok && c.feature_angle > 0 && cvt.stats.feature_sites > 0) {
+    if (!ok && cvt.stats.feature_sites + cvt.stats.cone_sites > 0) {
       // The feature curves' bands leave the closing rounds nothing to add where the dual
-      // goes wrong inside them (a junction in a strip between two curves): the component
-      // is remeshed again without its features rather than kept as it was.
+      // goes wrong inside them (a junction in a strip between two curves), and a fixed site
+      // cannot move off a place where it breaks the dual: the component is remeshed again
+      // without its fixed sites rather than kept as it was.
       c.feature_angle = 0;
+      c.cone_angle = 0;
       rep.features_dropped = true;
       ok = attempt(cvt, r, out.why);
     }

@@ -1,6 +1,7 @@
 #include "feature_sites.hpp"
 
 #include <gsp/cvt/features.hpp>
+#include <gsp/intrinsic/vertex_kinds.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +93,43 @@ void grow_band(const WorkingGeometry& g, double radius, std::vector<Index> on_cu
 }
 
 }  // namespace
+
+std::size_t add_cone_sites(const WorkingGeometry& g, double max_angle_deg, double spacing, std::size_t cap,
+                           FeatureSites& f) {
+  const TriangleMesh& m = g.mesh;
+  const intrinsic::CornerAngleSums sums = intrinsic::corner_angle_sums(m, std::vector<bool>(m.num_faces(), false));
+  // Boundary vertices are left to the boundary sites (a jagged scan boundary turns at every
+  // other vertex), and fixed sites already placed are not placed again.
+  std::vector<bool> excluded(m.num_vertices(), false);
+  for (Index h = 0; h < Index(g.boundary_halfedge.size()); ++h)
+    if (g.boundary_halfedge[h]) excluded[from_vertex(m, h)] = excluded[to_vertex(m, h)] = true;
+  for (Index v : f.site_vertex) excluded[v] = true;
+  const double bound = max_angle_deg * M_PI / 180;
+  std::vector<Index> candidates;
+  for (Index v = 0; v < m.num_vertices(); ++v)
+    if (sums.used[v] && !excluded[v] && sums.angle[v] < bound && sums.angle[v] >= 0.5 * bound &&
+        g.conn.vertex_corner_begin[v + 1] > g.conn.vertex_corner_begin[v])
+      candidates.push_back(v);
+  std::stable_sort(candidates.begin(), candidates.end(), [&](Index a, Index b) { return sums.angle[a] < sums.angle[b]; });
+  std::vector<Vec3> taken;
+  for (Index v : f.site_vertex) taken.push_back(m.positions[v]);
+  std::size_t added = 0;
+  for (Index v : candidates) {
+    if (added >= cap) break;
+    const Vec3 p = m.positions[v];
+    if (std::any_of(taken.begin(), taken.end(), [&](const Vec3& q) { return distance(p, q) < spacing; })) continue;
+    const Index corner = g.conn.vertex_corners[g.conn.vertex_corner_begin[v]];
+    std::array<double, 3> bary{0, 0, 0};
+    bary[corner_of(corner)] = 1;
+    SurfaceSite s = g.at(face_of(corner), bary);
+    s.fixed = true;
+    f.sites.push_back(s);
+    f.site_vertex.push_back(v);
+    taken.push_back(p);
+    ++added;
+  }
+  return added;
+}
 
 FeatureSites feature_sites(const WorkingGeometry& g, double angle_deg, double spacing, double band_width) {
   FeatureSites out;

@@ -34,6 +34,17 @@ struct FeatureSites {
 // would cut them. A jagged scan boundary turns often but between corners a few edges apart.
 FeatureSites feature_sites(const WorkingGeometry& g, double angle_deg, double spacing, double band_width);
 
+// Spike tips (CvtOptions::cone_angle): the interior vertices of the working mesh whose angles
+// sum to less than `max_angle_deg` but not less than half of it, the sharpest first, each at least `spacing` from every fixed site so far, at most `cap` of them,
+// appended to f's sites (fixed, no band: the free sites' regions meet at the tip as
+// anywhere). A cut-off tip is the remesh's largest distance from the input wherever the angle
+// sum is far below 360 (the cut's depth grows as the cone narrows). A sharper tip is left to
+// the free sites: so narrow a region meets too few others for the dual to give it a fan of
+// triangles (square pyramids with apexes of 57-89 degrees lost their apex sites in the dual).
+// Returns how many were added.
+std::size_t add_cone_sites(const WorkingGeometry& g, double max_angle_deg, double spacing, std::size_t cap,
+                           FeatureSites& f);
+
 // Every face of the band takes its sample (the one, of its corners' samples nearest through
 // the band, nearest its centroid): the band is shared out as the Voronoi regions of the
 // samples (in a strip between two close curves, of both curves' samples). Returns the faces

@@ -482,6 +482,8 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
     throw InvalidInput("cvt: the over-relaxation factor must be in [1, 2)");
   if (!(options.feature_angle >= 0 && options.feature_angle <= 180))
     throw InvalidInput("cvt: the feature angle must be in [0, 180] degrees");
+  if (!(options.cone_angle >= 0 && options.cone_angle <= 360))
+    throw InvalidInput("cvt: the spike tips' angle must be in [0, 360] degrees");
   CvtResult out;
   CvtStats& stats = out.stats;
   auto t0 = Clock::now();
@@ -555,13 +557,14 @@ CvtResult compute_cvt(const TriangleMesh& mesh, const CvtOptions& options) {
   t0 = Clock::now();
   // The feature curves' samples come first and take their share of the budget.
   FeatureSites features;
+  const double spacing = std::sqrt(2.0 * g.total_area / (std::sqrt(3.0) * double(n)));
   if (options.feature_angle > 0) {
-    const double spacing = std::sqrt(2.0 * g.total_area / (std::sqrt(3.0) * double(n)));
     features = feature_sites(g, options.feature_angle, spacing, kFeatureBand);
     stats.feature_sites = features.sites.size();
     stats.feature_curves = features.curves;
     stats.short_feature_curves = features.dropped_curves;
   }
+  if (options.cone_angle > 0) stats.cone_sites = add_cone_sites(g, options.cone_angle, spacing, n / 50, features);
   std::vector<SurfaceSite> sites = features.sites;
   if (n > sites.size()) {
     const std::vector<SurfaceSite> free = initial_sites(mesh, out.working, g, n - sites.size(), options);

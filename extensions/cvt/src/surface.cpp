@@ -33,6 +33,7 @@ void add_stats(CvtStats& sum, const CvtStats& s, bool first) {
   sum.feature_sites += s.feature_sites;
   sum.feature_curves += s.feature_curves;
   sum.short_feature_curves += s.short_feature_curves;
+  sum.cone_sites += s.cone_sites;
   sum.working_faces += s.working_faces;
   sum.subdivisions = std::max(sum.subdivisions, s.subdivisions);
   sum.bisections += s.bisections;

@@ -103,8 +103,9 @@ struct ComponentReport {
   std::size_t boundary_loops = 0;
   std::size_t sites = 0;                   // asked for (0 when kept before the CVT)
   std::size_t faces_flipped = 0;           // by the orientation fix
-  // The remesh with CvtOptions::feature_angle did not have the component's topology, so it was
-  // remeshed without its features (sharp edges chamfered as with feature_angle = 0).
+  // The remesh with fixed sites (CvtOptions::feature_angle's curves, cone_angle's spike tips)
+  // did not have the component's topology, so it was remeshed without them (sharp edges
+  // chamfered and tips cut as with feature_angle = 0 and cone_angle = 0).
   bool features_dropped = false;
   std::size_t retries = 0;                 // remeshes from other initial sites (SurfaceRemeshOptions::retries)
   // Remeshes with twice the sites of the one before (a component raised to min_component_sites
