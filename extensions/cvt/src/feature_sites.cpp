@@ -92,6 +92,17 @@ void grow_band(const WorkingGeometry& g, double radius, std::vector<Index> on_cu
   }
 }
 
+// A fixed site at working vertex v, appended to f (its index is f.sites.size() before).
+void add_fixed_site(const WorkingGeometry& g, Index v, FeatureSites& f) {
+  const Index corner = g.conn.vertex_corners[g.conn.vertex_corner_begin[v]];
+  std::array<double, 3> bary{0, 0, 0};
+  bary[corner_of(corner)] = 1;
+  SurfaceSite s = g.at(face_of(corner), bary);
+  s.fixed = true;
+  f.sites.push_back(s);
+  f.site_vertex.push_back(v);
+}
+
 }  // namespace
 
 std::size_t add_cone_sites(const WorkingGeometry& g, double max_angle_deg, double spacing, std::size_t cap,
@@ -118,13 +129,7 @@ std::size_t add_cone_sites(const WorkingGeometry& g, double max_angle_deg, doubl
     if (added >= cap) break;
     const Vec3 p = m.positions[v];
     if (std::any_of(taken.begin(), taken.end(), [&](const Vec3& q) { return distance(p, q) < spacing; })) continue;
-    const Index corner = g.conn.vertex_corners[g.conn.vertex_corner_begin[v]];
-    std::array<double, 3> bary{0, 0, 0};
-    bary[corner_of(corner)] = 1;
-    SurfaceSite s = g.at(face_of(corner), bary);
-    s.fixed = true;
-    f.sites.push_back(s);
-    f.site_vertex.push_back(v);
+    add_fixed_site(g, v, f);
     taken.push_back(p);
     ++added;
   }
@@ -141,14 +146,8 @@ FeatureSites feature_sites(const WorkingGeometry& g, double angle_deg, double sp
   std::vector<Index> site_at(m.num_vertices(), kInvalidIndex);
   auto site_of = [&](Index v) {
     if (site_at[v] == kInvalidIndex) {
-      const Index corner = g.conn.vertex_corners[g.conn.vertex_corner_begin[v]];
-      std::array<double, 3> bary{0, 0, 0};
-      bary[corner_of(corner)] = 1;
-      SurfaceSite s = g.at(face_of(corner), bary);
-      s.fixed = true;
       site_at[v] = Index(out.sites.size());
-      out.sites.push_back(s);
-      out.site_vertex.push_back(v);
+      add_fixed_site(g, v, out);
     }
     return site_at[v];
   };
