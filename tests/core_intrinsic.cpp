@@ -59,6 +59,69 @@ TEST(Bridges, SkippedFacesDoNotJoinFans) {
   EXPECT_EQ(bridges(m, {false, false, false, true}), std::vector<Index>{0});
 }
 
+// The definition, read off the faces alone: at v, the faces (one per corner at v) joined when
+// two of them hold a common edge {v, w} with w != v; v is a bridge where they fall apart.
+std::vector<Index> bridges_by_definition(const TriangleMesh& m, const std::vector<bool>& skipped) {
+  std::vector<Index> out;
+  for (Index v = 0; v < Index(m.num_vertices()); ++v) {
+    std::vector<Index> corner;   // 3f + i with triangles[f][i] == v, unskipped
+    for (Index f = 0; f < Index(m.num_faces()); ++f)
+      for (Index i = 0; i < 3; ++i)
+        if (!skipped[f] && m.triangles[f][i] == v) corner.push_back(3 * f + i);
+    // The edges {v, w} of corner c: to its next and previous corner's vertex.
+    auto edges = [&](Index c) {
+      const Triangle& t = m.triangles[c / 3];
+      return std::array<Index, 2>{t[(c % 3 + 1) % 3], t[(c % 3 + 2) % 3]};
+    };
+    std::vector<int> group(corner.size());
+    for (std::size_t i = 0; i < group.size(); ++i) group[i] = int(i);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t i = 0; i < corner.size(); ++i)
+        for (std::size_t j = 0; j < corner.size(); ++j) {
+          if (group[i] == group[j]) continue;
+          bool share = false;
+          for (Index a : edges(corner[i]))
+            for (Index b : edges(corner[j])) share = share || (a == b && a != v);
+          if (share) group[i] = group[j] = std::min(group[i], group[j]), changed = true;
+        }
+    }
+    if (!corner.empty() && std::any_of(group.begin(), group.end(), [&](int g) { return g != group[0]; }))
+      out.push_back(v);
+  }
+  return out;
+}
+
+TEST(Bridges, RandomSoupsMatchTheDefinition) {
+  // Few vertices, many faces: repeated edges (non-manifold), both orientations, faces that
+  // repeat a vertex, skipped faces; every kind of corner joint the pass meets.
+  std::uint32_t state = 12345;
+  auto next = [&](std::uint32_t n) {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) % n;
+  };
+  std::size_t with_bridges = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    TriangleMesh m;
+    const std::uint32_t nv = 4 + next(9), nf = 1 + next(14);
+    for (std::uint32_t v = 0; v < nv; ++v) m.positions.push_back(Vec3{double(v), double(v * v % 7), double(v % 3)});
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      Triangle t{Index(next(nv)), Index(next(nv)), Index(next(nv))};
+      if (next(4) != 0)
+        while (t[1] == t[0]) t[1] = Index(next(nv));   // most faces proper, some repeat a vertex
+      if (next(4) != 0)
+        while (t[2] == t[0] || t[2] == t[1]) t[2] = Index(next(nv));
+      m.triangles.push_back(t);
+    }
+    std::vector<bool> skipped(nf, false);
+    for (std::uint32_t f = 0; f < nf; ++f) skipped[f] = next(6) == 0;
+    const std::vector<Index> want = bridges_by_definition(m, skipped);
+    with_bridges += !want.empty();
+    ASSERT_EQ(bridges(m, skipped), want) << "trial " << trial;
+  }
+  EXPECT_GT(with_bridges, 50u);   // the soups do exercise the answer
+}
+
 TEST(VertexKinds, GridInteriorFlatAndCornersFlatBoundary) {
   const TriangleMesh m = test::grid(4);
   const Connectivity conn = build_connectivity(m);
