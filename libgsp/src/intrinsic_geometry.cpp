@@ -1,6 +1,8 @@
 #include "intrinsic_geometry.hpp"
 #include "prefetch_corners.hpp"
+#include "ring_links.hpp"
 
+#include <gsp/intrinsic/coplanar_faces.hpp>
 #include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/intrinsic/saddle_creases.hpp>
 
@@ -190,7 +192,9 @@ void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skippe
       // from the other two (a degenerate face keeps its own atan2: its corners may sum to 0).
       const Vec3 p0 = mesh.positions[t[0]], p1 = mesh.positions[t[1]], p2 = mesh.positions[t[2]];
       const Vec3 e01 = p1 - p0, e02 = p2 - p0, e12 = p2 - p1;
-      const double twice_area = norm(cross(e01, e02));
+      const Vec3 n = cross(e01, e02);
+      const double twice_area = norm(n);
+      if (!sums.normal.empty()) sums.normal[f] = unit_normal(n);
       a[0] = std::atan2(twice_area, dot(e01, e02));
       a[1] = std::atan2(twice_area, -dot(e01, e12));
       a[2] = twice_area > 0 ? kPi - a[0] - a[1] : std::atan2(0.0, dot(e02, e12));
@@ -214,7 +218,7 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
                                        const std::vector<Index>& nonmanifold_vertices,
-                                       const std::function<Index(Index)>* crease_partner) {
+                                       const std::vector<Index>* crease_links) {
   constexpr double kPi = 3.14159265358979323846;
   const std::size_t nv = mesh.num_vertices();
   const std::vector<double>& angle = sums.angle;
@@ -277,10 +281,10 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAng
       if (!(next_to[v] & kTurnNext)) lone.push_back(Index(v));
     }
   }
-  if (crease_partner) {
+  if (crease_links) {
     std::vector<std::uint8_t> interior(nv);   // the vertices with an angle sum of their own
     for (std::size_t v = 0; v < nv; ++v) interior[v] = used[v] && !boundary[v] && !joins_fans[v];
-    apply_crease_rules(mesh, angle, interior, skipped_face, *crease_partner, lone, kind);
+    apply_crease_rules(mesh, angle, interior, skipped_face, *crease_links, sums.normal, lone, kind);
   }
   return kind;
 }
@@ -322,13 +326,23 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectiv
   const std::vector<std::uint8_t> boundary = boundary_halfedges(conn, skipped_face, length);
   const std::vector<Index> nonmanifold =
       nonmanifold_vertices(mesh, conn, bridge_vertices, coincident_vertices, &skipped_face);
-  const CornerAngleSums sums = corner_angle_sums(mesh, skipped_face, angles_from_length ? &length : nullptr);
-  // The crease limit for 3D angles (intrinsic lengths have no creases), as the core applies it.
-  const std::function<Index(Index)> partner = [&](Index h) {
+  CornerAngleSums sums;
+  sums.angle.assign(mesh.num_vertices(), 0.0);
+  sums.used.assign(mesh.num_vertices(), 0);
+  if (!angles_from_length) sums.normal.assign(mesh.num_faces(), {0, 0, 0});   // for the creases
+  add_corner_angles(mesh, skipped_face, angles_from_length ? &length : nullptr, sums, 0, mesh.num_faces());
+  // The crease limit for 3D angles (intrinsic lengths have no creases), as the core applies it:
+  // its radial links' encoding (ring_links.hpp), pairs where an edge joins two faces that take part.
+  if (angles_from_length) return vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold);
+  if (conn.num_halfedges() > detail::kRingIndexMask) throw InvalidInput("mesh too large: more than 2^29 - 1 halfedges");
+  auto runs_up = [&](Index h) { return from_vertex(mesh, h) < to_vertex(mesh, h); };
+  std::vector<Index> links(conn.num_halfedges());
+  for (Index h = 0; h < Index(links.size()); ++h) {
     const Index g = conn.radial_next[h];
-    return g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)] ? g : h;
-  };
-  return vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold, angles_from_length ? nullptr : &partner);
+    const bool pair = g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)];
+    links[h] = pair ? g | detail::kRingPair | (runs_up(g) ? detail::kRingNextDir : 0) | (runs_up(h) ? detail::kRingSelfDir : 0) : h;
+  }
+  return vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold, &links);
 }
 
 }  // namespace gsp::intrinsic

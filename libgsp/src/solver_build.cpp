@@ -157,13 +157,9 @@ void GeodesicSolver::Impl::analyse_vertices(Connectivity& conn, intrinsic::Corne
   std::vector<std::uint8_t> boundary_halfedge(input.ring.size());
   for (std::size_t h = 0; h < boundary_halfedge.size(); ++h)
     boundary_halfedge[h] = (input.ring[h] & detail::kRingIndexMask) == h;
-  // With rule 4's crease limit (3D creases: a caller's metric has none).
-  const std::function<Index(Index)> crease_partner = [&](Index h) {
-    const Index link = input.ring[h];
-    return (link & detail::kRingPair) ? (link & detail::kRingIndexMask) : h;
-  };
+  // With rule 4's crease limit (3D creases: a caller's metric has none), read off the links.
   vertex_kind = intrinsic::vertex_kinds(mesh(), angle_sums, boundary_halfedge, skipped_face, nonmanifold,
-                                        custom_lengths ? nullptr : &crease_partner);
+                                        custom_lengths ? nullptr : &input.ring);
   // Carried windows (3D lengths only: a caller's metric need not be flat where 3D is planar):
   // the vertices that bound them; the faces' flags follow once the flips are done.
   if (!custom_lengths)
@@ -257,6 +253,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
   std::size_t angles_done = 0;
   angle_sums.angle.assign(mesh().num_vertices(), 0.0);
   angle_sums.used.assign(mesh().num_vertices(), 0);
+  if (!custom_lengths) angle_sums.normal.assign(mesh().num_faces(), {0, 0, 0});   // the crease rule's
   if (!two) {
     conn = build_connectivity(mesh());
     timings.connectivity = lap();
@@ -287,6 +284,7 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
     angles_done = 0;
     angle_sums.angle.assign(mesh().num_vertices(), 0.0);
     angle_sums.used.assign(mesh().num_vertices(), 0);
+    if (!custom_lengths) angle_sums.normal.assign(mesh().num_faces(), {0, 0, 0});
   }
   auto finish_angles = [&] {
     intrinsic::add_corner_angles(mesh(), skipped_face, angle_lengths, angle_sums, angles_done, mesh().num_faces());

@@ -5,6 +5,7 @@
 #include <gsp/connectivity.hpp>
 #include <gsp/mesh.hpp>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -18,6 +19,14 @@ inline constexpr double kCoplanarDegrees = 0.05;
 inline Vec3 face_normal(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions, Index f) {
   const Triangle& t = triangles[f];
   return cross(positions[t[1]] - positions[t[0]], positions[t[2]] - positions[t[0]]);
+}
+
+// A face normal as the flat-corner rule's creases compare them: unit length, in float; zero
+// for a zero vector.
+inline std::array<float, 3> unit_normal(const Vec3& n) {
+  const double length = std::sqrt(dot(n, n));
+  const double k = length > 0 ? 1 / length : 0;
+  return {float(n[0] * k), float(n[1] * k), float(n[2] * k)};
 }
 
 // Whether face_of(h) (normal n, face_normal()) and face_of(g), both on halfedge h's edge, lie

@@ -19,8 +19,8 @@
 // (the measurements: docs/gsp-core.md, rule 4, "Alone on a crease").
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
+#include <array>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 namespace gsp::intrinsic {
@@ -35,12 +35,16 @@ namespace gsp::intrinsic {
 // ends at the first vertex that is not one of them, a saddle if that vertex's angle sum exceeds
 // 2 pi by more than the same tolerance (any saddle: on midpoint-split scans the smallest ones
 // bend lines too). Only `interior` vertices (used, not on the boundary, not joining several
-// fans) are flat or saddles here. `partner(h)`: the other halfedge of h's edge where the edge
-// joins exactly two faces that take part, else h. vertex_kinds() runs it when given a partner;
-// it costs nothing on a mesh without flat vertices.
+// fans) are flat or saddles here. `links`: per halfedge, the core's radial link
+// (libgsp/src/ring_links.hpp: the next halfedge of its edge, kRingPair where the edge joins
+// exactly two faces that take part, and both halfedges' direction bits); only the pairs are
+// read. `face_normal`: per face its unit normal (unit_normal() of face_normal(),
+// gsp/intrinsic/coplanar_faces.hpp), as CornerAngleSums::normal holds it, or empty: then
+// computed here. vertex_kinds() runs it when given the links; it costs nothing on a mesh
+// without flat vertices.
 void apply_crease_rules(const TriangleMesh& mesh, const std::vector<double>& angle,
                         const std::vector<std::uint8_t>& interior, const std::vector<bool>& skipped_face,
-                        const std::function<Index(Index)>& partner, const std::vector<Index>& lone,
-                        std::vector<std::uint8_t>& kind);
+                        const std::vector<Index>& links, const std::vector<std::array<float, 3>>& face_normal,
+                        const std::vector<Index>& lone, std::vector<std::uint8_t>& kind);
 
 }  // namespace gsp::intrinsic

@@ -6,7 +6,7 @@
 #include <gsp/types.hpp>
 
 #include <cstdint>
-#include <functional>
+#include <array>
 #include <vector>
 
 namespace gsp::intrinsic {
@@ -60,6 +60,11 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const std::vect
 struct CornerAngleSums {
   std::vector<double> angle;
   std::vector<std::uint8_t> used;
+  // Per face its unit normal (unit_normal() of face_normal(), gsp/intrinsic/coplanar_faces.hpp;
+  // zero for a skipped face), written by add_corner_angles from 3D positions where the caller
+  // sized it to the face count: the cross product it takes is the normal, and the crease rule
+  // (apply_crease_rules) reads it instead of a pass of its own. Left empty, nothing is written.
+  std::vector<std::array<float, 3>> normal;
 };
 CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                                   const std::vector<double>* length = nullptr);
@@ -67,14 +72,15 @@ CornerAngleSums corner_angle_sums(const TriangleMesh& mesh, const std::vector<bo
 // give the sums of one pass to the bit (each vertex adds its corners in face order).
 void add_corner_angles(const TriangleMesh& mesh, const std::vector<bool>& skipped_face,
                        const std::vector<double>* length, CornerAngleSums& sums, std::size_t begin, std::size_t end);
-// With `crease_partner` (3D positions only; see apply_crease_rules() in
-// saddle_creases.hpp for what it returns) the flat vertices on creases that end at saddles are
-// plain too, and those alone on a crease between convex ones convex.
+// With `crease_links` (3D positions only: the core's radial links, see apply_crease_rules() in
+// saddle_creases.hpp) the flat vertices on creases that end at saddles are plain too, and those
+// alone on a crease between convex ones convex; sums.normal, where filled, are the faces'
+// normals they read.
 std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const CornerAngleSums& sums,
                                        const std::vector<std::uint8_t>& boundary_halfedge,
                                        const std::vector<bool>& skipped_face,
                                        const std::vector<Index>& nonmanifold_vertices,
-                                       const std::function<Index(Index)>* crease_partner = nullptr);
+                                       const std::vector<Index>* crease_links = nullptr);
 
 // What vertex_kinds above needs from the connectivity, as the core's propagation sees the
 // mesh. boundary_halfedges: per halfedge, whether the propagation crosses from it to no other
