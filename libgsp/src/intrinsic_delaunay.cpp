@@ -2,6 +2,7 @@
 
 #include "disjoint_sets.hpp"
 #include "prefetch_corners.hpp"
+#include "side_by_side.hpp"
 
 #include <gsp/connectivity.hpp>
 
@@ -167,17 +168,28 @@ std::size_t orient_patches(IntrinsicTriangulation& t) {
   return count;
 }
 
-// Already consistent across every two-face edge (how most meshes come): the patches are the
-// components over those edges, no face turns within one, and each patch is wound as
-// wound_inwards says for a patch with no reversed face. The same answer as orient_patches,
-// from passes in face order (the face-by-face growth reads the mesh in a random order: 0.4 s
-// of a 2.2M-vertex preparation). False, changing nothing, when some edge is inconsistent.
-bool orient_consistent_patches(IntrinsicTriangulation& t) {
+// The patches of a triangulation already consistent across every two-face edge (how most
+// meshes come): the components over those edges, numbered in face order, with each one's face
+// count and whether it is open (a boundary, non-manifold or skipped-neighbour edge).
+struct WindingPatches {
+  std::vector<Index> patch;   // per face
+  std::vector<Index> faces;   // per patch
+  std::vector<char> open;     // per patch
+};
+
+// The patches as above, from a pass in face order (the face-by-face growth of orient_patches
+// reads the mesh in a random order: 0.4 s of a 2.2M-vertex preparation). False where some edge
+// is wound inconsistently.
+bool consistent_patches(const IntrinsicTriangulation& t, WindingPatches& out) {
   const Index nf = Index(t.triangles.size());
   DisjointSets sets(nf);   // over faces; a patch's root is its first face
   std::vector<char> open_face(nf, 0);   // a boundary, non-manifold or skipped-neighbour edge
   for (Index f = 0; f < nf; ++f) {
-    for (Index i = 0; i < 3; ++i) prefetch_twin(t, 3 * f + i);
+    for (Index i = 0; i < 3; ++i) {   // the twins ahead, and their faces' sets (a miss each otherwise)
+      prefetch_twin(t, 3 * f + i);
+      const Index ahead = 3 * f + i + kHalfedgesAhead;
+      if (ahead < t.ring.size()) __builtin_prefetch(sets.parent.data() + face_of(t.ring[ahead]));
+    }
     if (t.skipped[f]) continue;
     for (Index i = 0; i < 3; ++i) {
       const Index h = 3 * f + i, g = t.ring[h];
@@ -197,67 +209,88 @@ bool orient_consistent_patches(IntrinsicTriangulation& t) {
   }
   // Roots, then patch numbers in face order (a root precedes the other faces of its patch),
   // with each patch's face count and whether it is open.
-  std::vector<Index>& patch = sets.parent;   // each face's root, then its patch number
-  for (Index f = 0; f < nf; ++f) patch[f] = sets.find(f);
-  std::vector<Index> faces;
-  std::vector<char> open;
+  for (Index f = 0; f < nf; ++f) sets.parent[f] = sets.find(f);
+  out.patch = std::move(sets.parent);   // each face's root, then its patch number
+  std::vector<Index>& patch = out.patch;
+  out.faces.clear(), out.open.clear();
   for (Index f = 0; f < nf; ++f) {
     if (patch[f] == f) {
-      patch[f] = Index(faces.size());
-      faces.push_back(0), open.push_back(0);
+      patch[f] = Index(out.faces.size());
+      out.faces.push_back(0), out.open.push_back(0);
     } else {
       patch[f] = patch[patch[f]];
     }
     if (t.skipped[f]) continue;
-    ++faces[patch[f]];
-    open[patch[f]] |= open_face[f];
+    ++out.faces[patch[f]];
+    out.open[patch[f]] |= open_face[f];
   }
-  const std::size_t patches = faces.size();
-  std::vector<bool> flip_face;
+  return true;
+}
+
+// Which faces to reverse so that each patch is wound as wound_inwards says for a patch with
+// no reversed face: every face of a patch to be turned (none without positions: the majority
+// rule keeps a patch with no reversed face as it is). Reads only `triangles` (the patches'
+// faces as numbered), `skipped` and `positions`, so it may run beside flips of a copy.
+std::vector<bool> faces_to_reverse(const std::vector<Triangle>& triangles, const std::vector<bool>& skipped,
+                                   const std::vector<Vec3>* positions, const WindingPatches& patches,
+                                   std::size_t& count) {
+  count = 0;
+  if (!positions) return {};
+  const Index nf = Index(triangles.size());
+  const std::vector<Index>& patch = patches.patch;
+  const std::vector<Index>& faces = patches.faces;
+  const std::vector<char>& open = patches.open;
+  const std::size_t n = faces.size();
+  const std::vector<Vec3>& p = *positions;
+  // What wound_inwards reads of each patch (none reversed): the volume about the origin of a
+  // closed one; the centroid, the volume about it and the tetrahedra of the others (open, or
+  // closed with a zero volume).
+  std::vector<double> origin_volume(n, 0.0), volume(n, 0.0), tetrahedra(n, 0.0);
+  std::vector<Vec3> centre(n, Vec3{0, 0, 0});
+  for (Index f = 0; f < nf; ++f)
+    if (!skipped[f] && !open[patch[f]]) {
+      prefetch_corners(triangles, p, f);
+      const Triangle& c = triangles[f];
+      origin_volume[patch[f]] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
+    }
+  std::vector<char> about_centre(n, 0);
+  bool any = false;
+  for (std::size_t k = 0; k < n; ++k) any |= about_centre[k] = char(open[k] || origin_volume[k] == 0);
+  for (Index f = 0; any && f < nf; ++f)
+    if (!skipped[f] && about_centre[patch[f]]) {
+      prefetch_corners(triangles, p, f);
+      for (Index x : triangles[f]) centre[patch[f]] = centre[patch[f]] + (1.0 / (3.0 * double(faces[patch[f]]))) * p[x];
+    }
+  for (Index f = 0; any && f < nf; ++f) {
+    if (skipped[f] || !about_centre[patch[f]]) continue;
+    prefetch_corners(triangles, p, f);
+    const Index k = patch[f];
+    const Triangle& c = triangles[f];
+    const Vec3 a = p[c[0]] - centre[k], b = p[c[1]] - centre[k], d = p[c[2]] - centre[k];
+    const double x = dot(a, cross(b, d));
+    volume[k] += x;
+    tetrahedra[k] += std::abs(x);
+  }
+  std::vector<char> invert(n, 0);
+  bool any_invert = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    invert[k] = char(faces[k] > 0 && wound_inwards(!open[k], origin_volume[k], volume[k], tetrahedra[k], 0, faces[k]));
+    any_invert = any_invert || invert[k];
+  }
+  if (!any_invert) return {};
+  std::vector<bool> flip_face(nf, false);
+  for (Index f = 0; f < nf; ++f)
+    if (!skipped[f] && invert[patch[f]]) flip_face[f] = true, ++count;
+  return flip_face;
+}
+
+// The winding of consistent patches: the same answer as orient_patches, from passes in face
+// order. False, changing nothing, when some edge is inconsistent.
+bool orient_consistent_patches(IntrinsicTriangulation& t) {
+  WindingPatches patches;
+  if (!consistent_patches(t, patches)) return false;
   std::size_t count = 0;
-  if (t.positions) {
-    const std::vector<Vec3>& p = *t.positions;
-    // What wound_inwards reads of each patch (none reversed): the volume about the origin of
-    // a closed one; the centroid, the volume about it and the tetrahedra of the others (open,
-    // or closed with a zero volume).
-    std::vector<double> origin_volume(patches, 0.0), volume(patches, 0.0), tetrahedra(patches, 0.0);
-    std::vector<Vec3> centre(patches, Vec3{0, 0, 0});
-    for (Index f = 0; f < nf; ++f)
-      if (!t.skipped[f] && !open[patch[f]]) {
-        prefetch_corners(t.triangles, p, f);
-        const Triangle& c = t.triangles[f];
-        origin_volume[patch[f]] += dot(p[c[0]], cross(p[c[1]], p[c[2]]));
-      }
-    std::vector<char> about_centre(patches, 0);
-    bool any = false;
-    for (std::size_t k = 0; k < patches; ++k) any |= about_centre[k] = char(open[k] || origin_volume[k] == 0);
-    for (Index f = 0; any && f < nf; ++f)
-      if (!t.skipped[f] && about_centre[patch[f]]) {
-        prefetch_corners(t.triangles, p, f);
-        for (Index x : t.triangles[f]) centre[patch[f]] = centre[patch[f]] + (1.0 / (3.0 * double(faces[patch[f]]))) * p[x];
-      }
-    for (Index f = 0; any && f < nf; ++f) {
-      if (t.skipped[f] || !about_centre[patch[f]]) continue;
-      prefetch_corners(t.triangles, p, f);
-      const Index k = patch[f];
-      const Triangle& c = t.triangles[f];
-      const Vec3 a = p[c[0]] - centre[k], b = p[c[1]] - centre[k], d = p[c[2]] - centre[k];
-      const double x = dot(a, cross(b, d));
-      volume[k] += x;
-      tetrahedra[k] += std::abs(x);
-    }
-    std::vector<char> invert(patches, 0);
-    bool any_invert = false;
-    for (std::size_t k = 0; k < patches; ++k) {
-      invert[k] = char(faces[k] > 0 && wound_inwards(!open[k], origin_volume[k], volume[k], tetrahedra[k], 0, faces[k]));
-      any_invert = any_invert || invert[k];
-    }
-    if (any_invert) {
-      flip_face.assign(nf, false);
-      for (Index f = 0; f < nf; ++f)
-        if (!t.skipped[f] && invert[patch[f]]) flip_face[f] = true, ++count;
-    }
-  }
+  const std::vector<bool> flip_face = faces_to_reverse(t.triangles, t.skipped, t.positions, patches, count);
   reverse_faces(t, flip_face, count);
   return true;
 }
@@ -269,8 +302,10 @@ std::size_t orient_consistently(IntrinsicTriangulation& t) {
   return t.reoriented;
 }
 
-std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
-  orient_consistently(t);
+namespace {
+
+// The flips of make_intrinsic_delaunay, on faces wound already.
+std::size_t flip_to_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
   const Index nh = Index(t.length.size());
   // The flips run as from one stack that begins with every flippable edge (once, by its smaller
   // halfedge slot, in slot order) and gets the outer edges of each flip pushed on top: LIFO, so
@@ -371,6 +406,28 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
   }
   t.flipped = std::move(changed);
   return flips;
+}
+
+}  // namespace
+
+std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips) {
+  orient_consistently(t);
+  return flip_to_delaunay(t, max_flips);
+}
+
+std::size_t make_intrinsic_delaunay_beside(IntrinsicTriangulation& t, std::size_t max_flips,
+                                           const std::vector<Triangle>& wound,
+                                           const std::function<IntrinsicTriangulation()>& again) {
+  WindingPatches patches;
+  if (!t.positions || !consistent_patches(t, patches)) return make_intrinsic_delaunay(t, max_flips);
+  std::vector<bool> flip_face;
+  std::size_t count = 0, flips = 0;
+  side_by_side([&] { flip_face = faces_to_reverse(wound, t.skipped, t.positions, patches, count); },
+               [&] { flips = flip_to_delaunay(t, max_flips); });
+  if (count == 0) return flips;   // wound as it came: what make_intrinsic_delaunay flips
+  t = again();
+  reverse_faces(t, flip_face, count);
+  return flip_to_delaunay(t, max_flips);
 }
 
 }  // namespace gsp::detail

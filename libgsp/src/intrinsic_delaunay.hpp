@@ -16,6 +16,7 @@
 #include <gsp/types.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace gsp::detail {
@@ -45,6 +46,16 @@ struct IntrinsicTriangulation {
 // then flips in place; returns the number of flips. Only edges with exactly two non-skipped
 // faces and two distinct opposite vertices are flipped, whatever the faces' winding.
 std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_flips);
+
+// The same result on two threads: the flips start on the faces as wound while the winding's
+// last step (which patches face inwards: a pass or two over the positions) runs beside them.
+// Where a patch is to be turned after all (a mesh wound inwards, or inconsistently wound: then
+// everything as make_intrinsic_delaunay, on one thread), `again()` gives the unflipped
+// triangulation once more and it is wound and flipped again. `wound`: the faces t was made
+// with, read by the thread beside while the flips rewrite t's.
+std::size_t make_intrinsic_delaunay_beside(IntrinsicTriangulation& t, std::size_t max_flips,
+                                           const std::vector<Triangle>& wound,
+                                           const std::function<IntrinsicTriangulation()>& again);
 
 // The winding step alone; returns the number of faces reversed (also in t.reoriented).
 std::size_t orient_consistently(IntrinsicTriangulation& t);
