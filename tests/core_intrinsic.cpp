@@ -3,6 +3,8 @@
 // their construction.
 #include <gsp/connectivity.hpp>
 #include <gsp/intrinsic/bridge_vertices.hpp>
+#include <gsp/intrinsic/coincident_vertices.hpp>
+#include <gsp/intrinsic/edge_lengths.hpp>
 #include <gsp/intrinsic/face_frame.hpp>
 #include <gsp/intrinsic/vertex_kinds.hpp>
 
@@ -10,6 +12,7 @@
 
 #include "helpers/mesh_builders.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace gsp {
@@ -120,6 +123,34 @@ TEST(Bridges, RandomSoupsMatchTheDefinition) {
     ASSERT_EQ(bridges(m, skipped), want) << "trial " << trial;
   }
   EXPECT_GT(with_bridges, 50u);   // the soups do exercise the answer
+}
+
+// Vertices 0, 3 and 6 share a position, joined by zero-length edges of two slivers (0-3 and
+// 3-6); vertex 7 shares it too but no edge joins it to them; 1 and 4 are apart.
+TEST(Coincident, ZeroLengthEdgesOfFacesThatTakePartJoinTheirEnds) {
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, 0}, {0, 0, 0}, {2, 2, 0}};
+  m.triangles = {{0, 1, 2}, {3, 4, 5}, {0, 3, 1}, {3, 6, 4}, {7, 8, 2}};
+  const Connectivity conn = build_connectivity(m);
+  std::vector<double> length = intrinsic::halfedge_lengths(m);
+  intrinsic::snap_zero_lengths(length);
+  auto groups = [&](const std::vector<bool>& skipped) {
+    const intrinsic::CoincidentVertices c = intrinsic::coincident_vertices(m, conn, skipped, length);
+    std::vector<std::vector<Index>> out;
+    for (std::size_t g = 0; g + 1 < c.begin.size(); ++g) {
+      out.emplace_back(c.vertices.begin() + c.begin[g], c.vertices.begin() + c.begin[g + 1]);
+      std::sort(out.back().begin(), out.back().end());
+    }
+    return out;
+  };
+  EXPECT_EQ(groups(none_skipped(m)), (std::vector<std::vector<Index>>{{0, 3, 6}}));
+  // Without the second sliver only 0-3 is left; without both, nothing.
+  EXPECT_EQ(groups({false, false, false, true, false}), (std::vector<std::vector<Index>>{{0, 3}}));
+  EXPECT_TRUE(groups({false, false, true, true, false}).empty());
+  // A mesh with no zero-length edge has no groups (and builds no table for them).
+  const TriangleMesh g = test::grid(4);
+  std::vector<double> gl = intrinsic::halfedge_lengths(g);
+  EXPECT_TRUE(intrinsic::coincident_vertices(g, build_connectivity(g), none_skipped(g), gl).vertices.empty());
 }
 
 TEST(VertexKinds, GridInteriorFlatAndCornersFlatBoundary) {

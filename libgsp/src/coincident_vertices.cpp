@@ -1,10 +1,22 @@
 #include <gsp/intrinsic/coincident_vertices.hpp>
 #include <gsp/intrinsic/edge_lengths.hpp>
 
+#include <algorithm>
+
 namespace gsp::intrinsic {
 
 CoincidentVertices coincident_vertices(const TriangleMesh& mesh, const Connectivity& conn,
                                        const std::vector<bool>& skipped_face, const std::vector<double>& length) {
+  // The zero-length edges, found by reading the lengths in order (an edge's first halfedge lies
+  // anywhere: asking each edge for its length was a cache miss per edge, 0.2 s at 2.2M
+  // vertices), then taken in edge order as before: the same groups in the same order.
+  std::vector<Index> zero_edges;
+  for (Index h = 0; h < Index(length.size()); ++h) {
+    if (!zero_length_edge(length, h)) continue;
+    const Index e = conn.halfedge_edge[h];
+    if (e != kInvalidIndex && conn.edge_halfedge[e] == h && !skipped_face[face_of(h)]) zero_edges.push_back(e);
+  }
+  if (zero_edges.empty()) return {};   // most meshes: no per-vertex table at all
   // Union the ends of every zero-length edge of a face that takes part.
   std::vector<Index> parent;   // over the vertices met, by a map to local ids
   std::vector<Index> local(mesh.num_vertices(), kInvalidIndex), vertex;
@@ -16,9 +28,9 @@ CoincidentVertices coincident_vertices(const TriangleMesh& mesh, const Connectiv
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (Index e = 0; e < conn.num_edges(); ++e) {
+  std::sort(zero_edges.begin(), zero_edges.end());
+  for (Index e : zero_edges) {
     const Index h = conn.edge_halfedge[e];
-    if (skipped_face[face_of(h)] || !zero_length_edge(length, h)) continue;
     const Index a = id(from_vertex(mesh, h)), b = id(to_vertex(mesh, h));
     const Index ra = find(a), rb = find(b);
     if (ra != rb) parent[ra] = rb;
