@@ -49,8 +49,8 @@ bool splits_into_fans(const TriangleMesh& mesh, const Connectivity& conn, const 
 // face beyond). That successor is found for every corner in one pass in face order, and a
 // vertex whose cycle from its first corner takes all its corners has one fan; only the others
 // (boundary, non-manifold, skipped faces, bridges) are searched corner by corner. One
-// union-find over all corners (the same answer) took 9% of a one-thread gsp-geodesic run at
-// 557k vertices, in cache misses on its parent array; a search at every vertex took longer.
+// union-find over all corners gives the same answer but waits on a cache miss per corner, and
+// a search at every vertex on several (docs/gsp-core.md, "Bridges").
 std::vector<Index> bridge_vertices(const TriangleMesh& mesh, const Connectivity& conn,
                                    const std::vector<bool>& skipped_face) {
   const Index nh = Index(conn.num_halfedges()), nf = Index(mesh.num_faces());

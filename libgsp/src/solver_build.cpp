@@ -111,8 +111,8 @@ const detail::FaceFrames& GeodesicSolver::Impl::face_frames() const {
 
 void GeodesicSolver::Impl::build_delaunay(bool two_threads) {
   detail::IntrinsicTriangulation t = unflipped();
-  // On two threads the flips need not wait for the windings' volumes (open patches: two passes
-  // over the positions, 0.07-0.1 s at 557k vertices); the same triangulation either way.
+  // On two threads the flips need not wait for the windings' volumes (an open patch's are two
+  // passes over the positions); the same triangulation either way.
   flips = two_threads ? detail::make_intrinsic_delaunay_beside(t, flip_cap(), input.triangles(), [&] { return unflipped(); })
                       : detail::make_intrinsic_delaunay(t, flip_cap());
   if (flips == 0 && t.reoriented == 0) {   // a soup needing no flips still gets one winding
