@@ -156,14 +156,18 @@ TEST(ParallelPropagation, PreparationOnTwoThreadsBuildsTheSameSolver) {
 }
 
 // On two threads the Delaunay flips start before the windings' volumes are in; a mesh wound
-// inwards (every face turned: closed, and with a hole) is wound and flipped again, which must
-// end where one thread ends: the same field, the same flips.
+// inwards (every face turned: closed, and with a hole) is wound and flipped again, and one wound
+// inconsistently (every seventh face turned) is wound face by face first; each must end where
+// one thread ends: the same field, the same flips.
 TEST(ParallelPropagation, TwoThreadPreparationOfAMeshWoundInwards) {
   TriangleMesh closed = fertility();
   TriangleMesh open = closed;
   open.triangles.resize(open.triangles.size() - 40);   // a hole: its winding by the centroid volume
-  for (TriangleMesh* m : {&closed, &open}) {
-    for (Triangle& t : m->triangles) std::swap(t[1], t[2]);
+  TriangleMesh mixed = closed;
+  for (std::size_t f = 0; f < mixed.triangles.size(); f += 7) std::swap(mixed.triangles[f][1], mixed.triangles[f][2]);
+  for (Triangle& t : closed.triangles) std::swap(t[1], t[2]);
+  for (Triangle& t : open.triangles) std::swap(t[1], t[2]);
+  for (TriangleMesh* m : {&closed, &open, &mixed}) {
     const std::vector<Source> sources = spread_sources(*m, 2, 9);
     GeodesicOptions one;
     one.threads = 1;
@@ -174,7 +178,7 @@ TEST(ParallelPropagation, TwoThreadPreparationOfAMeshWoundInwards) {
     EXPECT_EQ(s2.intrinsic_flips(), s1.intrinsic_flips());
     const GeodesicResult a = s1.compute(sources, one), b = s2.compute(sources, one);
     for (std::size_t v = 0; v < m->num_vertices(); ++v)
-      ASSERT_EQ(b.vertex_distance[v], a.vertex_distance[v]) << "vertex " << v << (m == &open ? " (open)" : " (closed)");
+      ASSERT_EQ(b.vertex_distance[v], a.vertex_distance[v]) << "vertex " << v << (m == &open ? " (open)" : m == &mixed ? " (mixed)" : " (closed)");
   }
 }
 

@@ -418,8 +418,12 @@ std::size_t make_intrinsic_delaunay(IntrinsicTriangulation& t, std::size_t max_f
 std::size_t make_intrinsic_delaunay_beside(IntrinsicTriangulation& t, std::size_t max_flips,
                                            const std::vector<Triangle>& wound,
                                            const std::function<IntrinsicTriangulation()>& again) {
+  if (!t.positions) return make_intrinsic_delaunay(t, max_flips);
   WindingPatches patches;
-  if (!t.positions || !consistent_patches(t, patches)) return make_intrinsic_delaunay(t, max_flips);
+  if (!consistent_patches(t, patches)) {   // inconsistent: grown face by face (no second union pass)
+    orient_patches(t);
+    return flip_to_delaunay(t, max_flips);
+  }
   std::vector<bool> flip_face;
   std::size_t count = 0, flips = 0;
   side_by_side([&] { flip_face = faces_to_reverse(wound, t.skipped, t.positions, patches, count); },

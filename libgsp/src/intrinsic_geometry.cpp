@@ -339,8 +339,7 @@ std::vector<std::uint8_t> vertex_kinds(const TriangleMesh& mesh, const Connectiv
   std::vector<Index> links(conn.num_halfedges());
   for (Index h = 0; h < Index(links.size()); ++h) {
     const Index g = conn.radial_next[h];
-    const bool pair = g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)];
-    links[h] = pair ? g | detail::kRingPair | (runs_up(g) ? detail::kRingNextDir : 0) | (runs_up(h) ? detail::kRingSelfDir : 0) : h;
+    links[h] = detail::ring_link(h, g, g != h && conn.radial_next[g] == h && !skipped_face[face_of(g)], runs_up);
   }
   return vertex_kinds(mesh, sums, boundary, skipped_face, nonmanifold, &links);
 }

@@ -14,4 +14,13 @@ inline constexpr Index kRingPair = 0x20000000u;
 inline constexpr Index kRingNextDir = 0x80000000u;
 inline constexpr Index kRingSelfDir = 0x40000000u;
 
+// h's link to g, the next halfedge of its edge (h itself for a ring of one): g with both
+// direction bits (`up(x)`: x runs from its smaller to its larger vertex index) and, where
+// `pair`, kRingPair.
+template <class Up>
+inline Index ring_link(Index h, Index g, bool pair, Up&& up) {
+  if (g == h) return h;
+  return g | (up(g) ? kRingNextDir : 0) | (up(h) ? kRingSelfDir : 0) | (pair ? kRingPair : 0);
+}
+
 }  // namespace gsp::detail

@@ -118,12 +118,7 @@ struct Triangulation {
   void set_direction_bits(std::vector<Index>&& plain_ring, unsigned threads = 1) {
     const std::vector<Triangle>& tris = triangles();
     auto dir = [&](Index h) { return tris[face_of(h)][corner_of(h)] < tris[face_of(h)][corner_of(next_halfedge(h))]; };
-    auto link = [&](Index h, Index g, Index back) {
-      const bool pair = g != h && back == h;
-      return g == h ? h
-                    : (g | (dir(g) ? detail::kRingNextDir : 0) | (dir(h) ? detail::kRingSelfDir : 0) |
-                       (pair ? detail::kRingPair : 0));
-    };
+    auto link = [&](Index h, Index g, Index back) { return detail::ring_link(h, g, g != h && back == h, dir); };
     if (detail::ranges_used(threads, plain_ring.size()) > 1) {
       const std::vector<Index> plain = std::move(plain_ring);
       ring.resize(plain.size());
