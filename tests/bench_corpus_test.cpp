@@ -87,6 +87,10 @@ TEST(BenchCorpus, BrokenFileIsAFailedRowAndTheRunGoesOn) {
   EXPECT_GT(gsp["mre"].num, 0.0);
   EXPECT_LT(gsp["mre"].num, 0.01);   // fertility: about 0.2%
   EXPECT_LT(gsp["mre"].num, bench_method(good, "dijkstra")["mre"].num);
+  // The signed mean: within the MRE; Dijkstra's edge paths are never short, so its sign is +.
+  EXPECT_LE(std::abs(gsp["signed_re"].num), gsp["mre"].num);
+  EXPECT_GT(bench_method(good, "dijkstra")["signed_re"].num, 0.0);
+  EXPECT_DOUBLE_EQ(bench_method(good, "dijkstra")["signed_re"].num, bench_method(good, "dijkstra")["mre"].num);
   EXPECT_EQ(good["gsp_beats_dijkstra"].type, JsonValue::boolean);
   EXPECT_TRUE(good["gsp_beats_dijkstra"].b);
   EXPECT_GT(good["gsp_steps_per_face"].num, 1.0);

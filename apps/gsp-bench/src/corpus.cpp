@@ -47,7 +47,7 @@ CorpusRow corpus_row(const MeshRun& run, const std::string& category) {
     CorpusMethod c;
     c.name = m.method.name;
     c.skipped = one_line(m.skipped);
-    c.mre = s.mre, c.max_re = s.max_re, c.query_s = s.query_s;
+    c.mre = s.mre, c.max_re = s.max_re, c.signed_re = s.signed_re, c.query_s = s.query_s;
     c.bounds = s.bounds, c.has_bounds = s.bound_sources > 0;
     for (const SourceRun& sr : m.sources) c.source_mre.push_back(sr.has_errors ? sr.errors.mre : kNaN);
     if (m.method.id == Method::gsp) row.steps_per_face = s.update_steps_per_triangle;

@@ -4,6 +4,7 @@
 #include "bench.hpp"
 
 #include <cstddef>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct CorpusMethod {
   std::string name;
   std::string skipped;       // why the method refused the mesh; empty when it ran
   double mre, max_re;        // against exact: mean over sources of the MRE, max; NaN without exact
+  double signed_re = NAN;    // mean over sources of the signed mean relative error (< 0: short)
   double query_s;            // median time per query; NaN when skipped
   std::vector<double> source_mre;   // per source, in pick order; NaN where no exact reference
   BoundStats bounds;         // worst over sources (bounds.hpp)

@@ -40,6 +40,7 @@ cli::Json row_json(const CorpusRow& r) {
     mj["reason"] = m.skipped.empty() ? cli::Json() : cli::Json(m.skipped);
     mj["mre"] = number_or_null(m.mre);
     mj["max_re"] = number_or_null(m.max_re);
+    mj["signed_re"] = number_or_null(m.signed_re);
     mj["query_s"] = number_or_null(m.query_s);
     mj["bounds"] = m.has_bounds ? bounds_json(m.bounds) : cli::Json();
     methods.push_back(std::move(mj));
