@@ -247,9 +247,10 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   };
   std::size_t updates = 0;
 
-  // Scratch windows, made once: a Window default-initialises 120 bytes, and made where they are
-  // used (every offer's merge, every step's outputs) zeroing them took 9% of a query (perf).
-  // merge() and step() assign whole windows to what they return, so nothing stale is read.
+  // Scratch windows, made once per query: a Window default-initialises its 120 bytes, and made
+  // at every offer's merge and every step's outputs that zeroing was the query's largest item
+  // (docs/benchmarks.md, "One constant factor"). merge() and step() assign whole windows to
+  // what they return, so nothing stale is read.
   Window merged;
   Window out[kMaxStepOut];
   // Offers window w to face g; true when the face changed.

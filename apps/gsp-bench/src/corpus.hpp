@@ -3,8 +3,8 @@
 // mesh is gone (the run loads one mesh at a time), or the one-line reason the mesh failed.
 #include "bench.hpp"
 
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
