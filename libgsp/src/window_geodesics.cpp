@@ -191,7 +191,7 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   result.data_ = std::make_unique<WindowField::Data>();
   WindowField::Data& data = *result.data_;
   data.mesh = &mesh, data.k = k;
-  // A block of k windows per face (laid out below).
+  // Windows only for the faces reached (a path's propagation stops early): a block of k per face.
   data.block.assign(nf, kInvalidIndex);
   data.count.assign(nf, 0);
   std::vector<Window>& win = data.win;
@@ -217,15 +217,6 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   // written); per block: the least of them at each sample.
   std::vector<Values> slot_values;
   std::vector<Values> least;
-  // A whole field reaches every face it can: the blocks are laid out in face order from the
-  // start (a face and its neighbours' windows close in memory, no reallocation as it grows);
-  // a run that stops at its targets allocates them as faces are reached.
-  if (options.targets.empty()) {
-    for (Index f = 0; f < nf; ++f) block[f] = f;
-    win.resize(std::size_t(nf) * k);
-    slot_values.resize(win.size());
-    least.resize(nf);
-  }
   auto face_min = [&](Index f) {
     Values m;
     m.fill(kInf);
@@ -265,17 +256,13 @@ WindowField WindowGeodesics::field(const std::vector<Source>& sources, const Win
   // Offers window w to face g; true when the face changed.
   auto offer = [&](Index g, const Window& w) {
     const auto pts = samples(g);
-    if (count[g] == 0) {
+    if (block[g] == kInvalidIndex) {
       const Values first = values(w, pts);
       if (std::none_of(first.begin(), first.end(), [](double x) { return x < kInf; })) return false;
-      if (block[g] == kInvalidIndex) {
-        block[g] = Index(least.size());
-        least.push_back(first);
-        win.resize(win.size() + k);
-        slot_values.resize(win.size());
-      } else {
-        least[block[g]] = first;
-      }
+      block[g] = Index(least.size());
+      least.push_back(first);
+      win.resize(win.size() + k);
+      slot_values.resize(win.size());
       win[block[g] * k] = w;
       slot_values[block[g] * k] = first;
       count[g] = 1;
