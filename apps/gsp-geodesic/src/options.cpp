@@ -37,7 +37,7 @@ void add_options(CLI::App& app, Options& o) {
       ->type_name("D");
   app.add_option("--method", o.method,
                  "gsp (default), windows (three windows per face instead of one virtual source: about 8x as "
-                 "accurate on the corpus, 13-21x slower; vertex and face sources, --separate, --matrix; "
+                 "accurate on the corpus, 13-26x slower; vertex and face sources, --separate, --matrix; "
                  "docs/benchmarks.md), "
                  "dijkstra (edge graph, for "
                  "comparison), or graph-gsp (point clouds: virtual sources over the k-NN links instead of GSP "
