@@ -186,6 +186,62 @@ TEST(CoreLayout, SpatialLayoutOfAShuffledGridRecoversLocality) {
   EXPECT_EQ(a.face_order, b.face_order);
 }
 
+// A mesh with its faces in four blocks, every fourth face in each (what libigl's upsample
+// writes: the four children of a face a quarter of the file apart), vertices as they were.
+TriangleMesh faces_in_blocks(const TriangleMesh& m) {
+  TriangleMesh out = m;
+  out.triangles.clear();
+  for (std::size_t r = 0; r < 4; ++r)
+    for (std::size_t f = r; f < m.num_faces(); f += 4) out.triangles.push_back(m.triangles[f]);
+  return out;
+}
+
+TEST(CoreLayout, FaceOrderLayoutKeepsTheVerticesAndSortsTheFacesStably) {
+  for (const TriangleMesh& m : test_meshes()) {
+    const Layout l = face_order_layout(m);
+    expect_valid_layout(m, l);
+    expect_same_geometry(m, l);
+    for (std::size_t v = 0; v < m.num_vertices(); ++v) EXPECT_EQ(l.vertex_order[v], v);
+    auto smallest = [&](Index f) { return *std::min_element(m.triangles[f].begin(), m.triangles[f].end()); };
+    for (std::size_t i = 1; i < l.face_order.size(); ++i) {
+      const Index a = l.face_order[i - 1], b = l.face_order[i];
+      EXPECT_LE(smallest(a), smallest(b)) << i;
+      if (smallest(a) == smallest(b)) EXPECT_LT(a, b) << "ties keep the input's order, " << i;
+    }
+  }
+  EXPECT_THROW(face_order_layout(TriangleMesh{{{0, 0, 0}}, {{0, 0, 3}}}), InvalidInput);
+}
+
+// order_coherence judges the faces as well as the vertices: the grid's rows are coherent in
+// both, its faces in four blocks only in the vertices, and sorting the faces puts them right;
+// a shuffle is coherent in neither.
+TEST(CoreLayout, OrderCoherenceSeesFacesStoredInBlocks) {
+  const TriangleMesh rows = test::grid(100);
+  const OrderCoherence a = order_coherence(rows);
+  EXPECT_TRUE(a.coherent);
+  EXPECT_TRUE(a.faces_coherent) << a.face_spread << " against " << a.random_face_spread;
+  const TriangleMesh blocks = faces_in_blocks(rows);
+  const OrderCoherence b = order_coherence(blocks);
+  EXPECT_TRUE(b.coherent);
+  EXPECT_FALSE(b.faces_coherent) << b.face_spread << " against " << b.random_face_spread;
+  EXPECT_NEAR(b.random_face_spread, std::log2(double(rows.num_faces())) - 1, 1e-12);
+  const OrderCoherence c = order_coherence(apply_layout(blocks, face_order_layout(blocks)));
+  EXPECT_TRUE(c.coherent);
+  EXPECT_TRUE(c.faces_coherent) << c.face_spread;
+  const OrderCoherence d = order_coherence(apply_layout(rows, random_layout(rows, 9)));
+  EXPECT_FALSE(d.coherent);
+  EXPECT_FALSE(d.faces_coherent);
+  // Sorting is asked for only from kSortFacesFrom faces on (below, the state fits the caches).
+  EXPECT_FALSE(b.sort_faces);
+  const TriangleMesh big = faces_in_blocks(test::grid(512));   // 2 * 512^2 faces: the threshold
+  ASSERT_EQ(big.num_faces(), kSortFacesFrom);
+  const OrderCoherence e = order_coherence(big);
+  EXPECT_TRUE(e.coherent);
+  EXPECT_FALSE(e.faces_coherent);
+  EXPECT_TRUE(e.sort_faces);
+  EXPECT_FALSE(order_coherence(test::grid(512)).sort_faces);
+}
+
 TEST(CoreLayout, MeanLogNeighbourIndexDistanceOfAStrip) {
   // strip(q) numbers vertices in pairs across the strip: q+1 rungs of gap 1, 2q rails of gap
   // 2 and q diagonals (a, a+3) of gap 3: mean (q+1 + 2q log2 3 + 2q) / (4q + 1).

@@ -175,6 +175,18 @@ TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
   const TriangleMesh rows = grid(60);   // row-major: neighbours 1 or 61 apart
   io::write_mesh((dir / "rows.off").string(), rows);
   io::write_mesh((dir / "shuffled.off").string(), apply_layout(rows, random_layout(rows, 3)));
+  // The faces in four blocks (libigl's upsample writes its children so), on a grid of 2^19
+  // faces (from kSortFacesFrom faces the sort pays back), and the same few faces in blocks.
+  const TriangleMesh big = grid(512);
+  auto in_blocks = [](const TriangleMesh& m) {
+    TriangleMesh b = m;
+    b.triangles.clear();
+    for (std::size_t r = 0; r < 4; ++r)
+      for (std::size_t f = r; f < m.num_faces(); f += 4) b.triangles.push_back(m.triangles[f]);
+    return b;
+  };
+  io::write_mesh((dir / "blocks.ply").string(), in_blocks(big));
+  io::write_mesh((dir / "small_blocks.off").string(), in_blocks(rows));
   auto layout_of = [&](const std::string& file, const std::string& options, std::string out = "d.txt") {
     const auto r = run(quote(bin(kApp)) + " " + quote((dir / file).string()) + " " + options + " -o " +
                            quote((dir / out).string()) + " --stats -",
@@ -185,6 +197,8 @@ TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
   };
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0", "auto.txt"), "input order");
   EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0"), "z-order");
+  EXPECT_EQ(layout_of("blocks.ply", "--source-vertex 0", "blocks.txt"), "faces by smallest vertex");
+  EXPECT_EQ(layout_of("small_blocks.off", "--source-vertex 0"), "input order");
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0 --layout on", "on.txt"), "bottom-up clustering");
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0,5 --separate", "sep.txt"), "bottom-up clustering");
   EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0 --layout off"), "input order");
@@ -195,6 +209,10 @@ TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
     EXPECT_NEAR(a[v], norm(rows.positions[v]), 1e-5 * (1 + a[v])) << v;
     EXPECT_NEAR(a[v], b[v], 1e-5 * (1 + a[v])) << v;
   }
+  // In the file's vertex order (the vertices kept theirs) and exact on the plane.
+  const auto c = io::read_values_txt((dir / "blocks.txt").string());
+  ASSERT_EQ(c.size(), big.num_vertices());
+  for (std::size_t v = 0; v < c.size(); ++v) EXPECT_NEAR(c[v], norm(big.positions[v]), 1e-5 * (1 + c[v])) << v;
   EXPECT_EQ(run(quote(bin(kApp)) + " " + quote((dir / "rows.off").string()) + " --source-vertex 0 --layout maybe -o " +
                     quote((dir / "x.txt").string()),
                 dir)

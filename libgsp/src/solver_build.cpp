@@ -216,7 +216,9 @@ void GeodesicSolver::Impl::build(const TriangleMesh& given, std::shared_ptr<cons
   line_scale = custom_lengths ? options.edge_lengths_line_scale : 1.0;
   heuristic = options.heuristic;
   if (options.optimize_layout) {
-    Layout layout = options.spatial_layout ? gsp::spatial_layout(given) : compute_cache_layout(given);
+    Layout layout = options.faces_only_layout ? face_order_layout(given)
+                    : options.spatial_layout  ? gsp::spatial_layout(given)
+                                              : compute_cache_layout(given);
     if (owned) {
       apply_layout_in_place(*owned, layout);
       mesh_store = std::make_shared<TriangleMesh>(std::move(*owned));

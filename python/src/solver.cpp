@@ -169,15 +169,21 @@ std::shared_ptr<const GeodesicResult> Solver::field_with_sources(const std::vect
 
 namespace {
 
-// optimize_layout: True, False or "auto" (gsp::order_coherence decides).
-bool layout_from(const py::handle& value, const TriangleMesh& mesh) {
+// optimize_layout: True, False or "auto" (gsp::order_coherence decides, as gsp-geodesic's
+// --layout auto for one field: a scattered file gets the cheap Z-order, a file with coherent
+// vertices and scattered faces only its faces sorted, a coherent one nothing).
+void layout_from(const py::handle& value, const TriangleMesh& mesh, SolverOptions& options) {
   if (py::isinstance<py::str>(value)) {
     if (value.cast<std::string>() != "auto")
       throw py::value_error("optimize_layout must be True, False or \"auto\", not \"" + value.cast<std::string>() + "\"");
-    return !order_coherence(mesh).coherent;
+    const OrderCoherence order = order_coherence(mesh);
+    options.optimize_layout = !order.coherent || order.sort_faces;
+    options.spatial_layout = !order.coherent;
+    options.faces_only_layout = order.sort_faces;
+    return;
   }
   if (!py::isinstance<py::bool_>(value)) throw py::type_error("optimize_layout must be True, False or \"auto\"");
-  return value.cast<bool>();
+  options.optimize_layout = value.cast<bool>();
 }
 
 }  // namespace
@@ -192,8 +198,8 @@ that repeat a vertex are left out). intrinsic_delaunay propagates on the intrins
 triangulation (same surface, better-shaped triangles); metric is a gsp.metric.Metric (or a
 (3,3) tensor, or (n,3,3) / (m,3,3) tensors) to measure lengths in; optimize_layout reorders
 the faces for the cache (results keep the input's order): True, False, or "auto" (reorder
-unless the arrays' own order is already coherent: what pays for a single query, the default of
-gsp.geodesic_distance; see docs/scale.md). Every method releases the GIL, so threads can query
+unless the arrays' own order is already coherent, only the faces where only they are not:
+what pays for a single query, the default of gsp.geodesic_distance; see docs/scale.md). Every method releases the GIL, so threads can query
 one solver in parallel.)");
   cls.def(py::init([](const py::handle& V, const py::handle& F, bool intrinsic_delaunay, const py::handle& metric,
                       const py::handle& optimize_layout) {
@@ -201,9 +207,7 @@ one solver in parallel.)");
             if (mesh.num_faces() == 0) throw py::value_error("F is empty: a GeodesicSolver needs faces (see PointCloudSolver)");
             SolverOptions options = metric_solver_options(mesh, metric);
             options.intrinsic_delaunay = intrinsic_delaunay;
-            options.optimize_layout = layout_from(optimize_layout, mesh);
-            // "auto" is the one-off choice: where it reorders, the cheap Z-order does.
-            options.spatial_layout = py::isinstance<py::str>(optimize_layout);
+            layout_from(optimize_layout, mesh, options);
             py::gil_scoped_release nogil;
             return std::make_unique<Solver>(std::move(mesh), options, !options.edge_lengths.empty());
           }),

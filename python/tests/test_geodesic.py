@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import gsp
-from conftest import BIN_DIR, DATA_DIR, shared_mesh
+from conftest import BIN_DIR, DATA_DIR, grid, shared_mesh
 
 
 def test_plane_is_euclidean(plane):
@@ -81,12 +81,31 @@ def test_one_off_and_options(plane):
     np.testing.assert_allclose(bounded[a < 0.5], a[a < 0.5], rtol=1e-5, atol=1e-6)
 
 
+def test_layout_auto_sorts_faces_stored_in_blocks():
+    """A grid of 2^19 faces stored in four blocks (libigl's upsample writes a split face's
+    children so): the vertices are coherent, the faces scattered, and "auto" sorts the faces
+    (from gsp's kSortFacesFrom faces); the distances are the plane's, in the arrays' order."""
+    V, F = grid(513)
+    assert len(F) == 2**19
+    Fb = np.concatenate([F[r::4] for r in range(4)])
+    solver = gsp.GeodesicSolver(V, Fb, optimize_layout="auto")
+    assert solver.optimize_layout is True
+    assert gsp.GeodesicSolver(V, F[np.argsort(F.min(axis=1), kind="stable")], optimize_layout="auto").optimize_layout is False
+    d = solver.distance(0)
+    np.testing.assert_allclose(d, np.linalg.norm(V - V[0], axis=1), rtol=1e-5, atol=1e-6)
+
+
 def test_layout_auto_follows_the_arrays_order(plane):
     """optimize_layout="auto" (gsp.geodesic_distance's default) skips the cache layout for arrays
-    whose own order is coherent (the row-major grid) and keeps it for a shuffled copy; the
-    solver's default stays True (many queries); the distances agree on the plane."""
+    whose own order is coherent (the row-major grid, its faces by their smallest vertex) and
+    keeps it for a shuffled copy; the solver's default stays True (many queries); the distances
+    agree on the plane."""
     V, F = plane
+    Fc = F[np.argsort(F.min(axis=1), kind="stable")]
     assert gsp.GeodesicSolver(V, F).optimize_layout is True
+    assert gsp.GeodesicSolver(V, Fc, optimize_layout="auto").optimize_layout is False
+    # The fixture's faces come as two blocks (each cell's lower triangles, then its upper
+    # ones): its vertices are coherent, its faces not, but too few for the order to matter.
     assert gsp.GeodesicSolver(V, F, optimize_layout="auto").optimize_layout is False
     assert gsp.GeodesicSolver(V, F, optimize_layout=False).optimize_layout is False
     perm = np.random.default_rng(5).permutation(len(V))
@@ -94,6 +113,7 @@ def test_layout_auto_follows_the_arrays_order(plane):
     rank[perm] = np.arange(len(V))
     Vs, Fs = V[perm], rank[F]
     assert gsp.GeodesicSolver(Vs, Fs, optimize_layout="auto").optimize_layout is True
+
     a = gsp.geodesic_distance(V, F, 3)
     b = gsp.GeodesicSolver(V, F).distance(3)
     np.testing.assert_allclose(a, b, rtol=1e-5, atol=1e-6)

@@ -8,6 +8,8 @@ LayoutChoice choose_layout(const std::string& mode, const TriangleMesh& mesh, bo
   if (mode == "off") return c.optimize = false, c.reason = "--layout off", c;
   if (!one_field) return c.reason = "several fields: the layout pays back", c;
   c.order = order_coherence(mesh);
+  if (c.order.sort_faces)
+    return c.faces_only = true, c.reason = "one field, the file's vertices are coherent, its faces scattered", c;
   c.optimize = !c.order.coherent;
   c.spatial = c.optimize;
   c.reason = c.optimize ? "one field, the file's order is scattered" : "one field, the file's order is coherent";

@@ -137,6 +137,7 @@ void run(cli::Context& ctx, const Options& o) {
     SolverOptions so;
     so.optimize_layout = layout.optimize;
     so.spatial_layout = layout.spatial;
+    so.faces_only_layout = layout.faces_only;
     so.intrinsic_delaunay = !o.input_faces;
     so.heuristic = heuristic;
     apply_metric(ctx, metric, in, so);
@@ -171,11 +172,16 @@ void run(cli::Context& ctx, const Options& o) {
     ctx.settings()["precision_used"] = solver.resolved_precision(precision) == Precision::single ? "single" : "double";
     ctx.settings()["heuristic"] = o.heuristic;
     ctx.settings()["step"] = o.f;
-    ctx.settings()["layout"] = !so.optimize_layout ? "input order" : so.spatial_layout ? "z-order" : "bottom-up clustering";
+    ctx.settings()["layout"] = !so.optimize_layout      ? "input order"
+                               : so.faces_only_layout ? "faces by smallest vertex"
+                               : so.spatial_layout    ? "z-order"
+                                                      : "bottom-up clustering";
     ctx.settings()["layout_reason"] = layout.reason;
     if (layout.order.random_log_gap > 0) {
       ctx.operations()["file_order_log_gap"] = layout.order.file_log_gap;
       ctx.operations()["random_order_log_gap"] = layout.order.random_log_gap;
+      ctx.operations()["file_face_spread"] = layout.order.face_spread;
+      ctx.operations()["random_face_spread"] = layout.order.random_face_spread;
     }
     ctx.settings()["intrinsic_delaunay"] = so.intrinsic_delaunay;
     ctx.operations()["intrinsic_flips"] = solver.intrinsic_flips();

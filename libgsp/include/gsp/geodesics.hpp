@@ -240,6 +240,11 @@ struct SolverOptions {
   // about 5% slower on small ones; what a one-field run on a scattered file wants
   // (docs/layout.md, "Z-order for one field").
   bool spatial_layout = false;
+  // With optimize_layout: the vertices kept in their order and only the faces sorted by their
+  // smallest vertex (face_order_layout: one counting sort), for a file whose vertices are
+  // coherent and whose faces are not (docs/layout.md, "Faces out of order"). Takes precedence
+  // over spatial_layout.
+  bool faces_only_layout = false;
   // Propagate on the intrinsic Delaunay triangulation of the mesh (edge flips that keep the
   // surface exactly; same vertices): slivers and fans of CAD meshes become well-shaped
   // triangles. Used for vertex sources and for points inside faces (found on the flipped
