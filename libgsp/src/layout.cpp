@@ -367,8 +367,8 @@ Layout face_order_layout(const TriangleMesh& mesh) {
   std::iota(l.vertex_order.begin(), l.vertex_order.end(), Index{0});
   l.vertex_rank = l.vertex_order;
   // One stable counting pass on the smallest vertex (ties keep the input's order), not the
-  // other layouts' three: what the propagation needs is neighbours near each other, and the
-  // pass is a tenth of the run it is for at 2.2M vertices with three (docs/layout.md).
+  // other layouts' three: what the propagation needs is neighbours near each other, and three
+  // passes cost a noticeable part of the run they are for (docs/layout.md, "Faces out of order").
   auto smallest = [&](std::size_t f) {
     const Triangle& t = mesh.triangles[f];
     const Index hi = std::max({t[0], t[1], t[2]});
@@ -452,7 +452,7 @@ void apply_layout_in_place(TriangleMesh& mesh, const Layout& layout) {
   check_layout_sizes(mesh, layout);
   const std::size_t nv = mesh.num_vertices();
   // The vertices kept in their order (face_order_layout): their arrays stay as they are, not
-  // copied into fresh memory (whose page faults cost more than the sort on 300k faces).
+  // copied into fresh memory, whose page faults cost more than the sort itself.
   bool same_vertices = true;
   for (std::size_t v = 0; v < nv && same_vertices; ++v) same_vertices = layout.vertex_order[v] == v;
   // One array at a time, each old one freed as its new one is ready.

@@ -83,9 +83,9 @@ OrderCoherence order_coherence(const TriangleMesh& mesh);
 // 3.1-9.9 below in their own order (57 of 92 corpus meshes) and about 0 shuffled.
 inline constexpr double kCoherentLogGap = 3.0;
 
-// Faces from which sorting a scattered face order pays back in one field (docs/layout.md,
-// "Faces out of order": a whole run 0.71-0.77x at 1.1M-4.4M faces, 0.99-1.02x at 400k, 1.06x
-// at 280k and 1.02-1.08x at 100k, where the state fits the caches anyway).
+// Faces from which sorting a scattered face order pays back in one field: below, the state
+// fits the caches anyway and the sort costs more than it saves (measured across sizes in
+// docs/layout.md, "Faces out of order").
 inline constexpr std::size_t kSortFacesFrom = std::size_t(1) << 19;
 
 }  // namespace gsp
