@@ -197,7 +197,9 @@ TEST(GeodesicApp, LayoutAutoSkipsItForOneFieldOnACoherentFile) {
   };
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0", "auto.txt"), "input order");
   EXPECT_EQ(layout_of("shuffled.off", "--source-vertex 0"), "z-order");
-  EXPECT_EQ(layout_of("blocks.ply", "--source-vertex 0", "blocks.txt"), "faces by smallest vertex");
+  // One thread: on two, GSP's order effects reach 2e-5 at a few vertices of this plane
+  // whatever the layout (the faces as stored too).
+  EXPECT_EQ(layout_of("blocks.ply", "--source-vertex 0 --threads 1", "blocks.txt"), "faces by smallest vertex");
   EXPECT_EQ(layout_of("small_blocks.off", "--source-vertex 0"), "input order");
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0 --layout on", "on.txt"), "bottom-up clustering");
   EXPECT_EQ(layout_of("rows.off", "--source-vertex 0,5 --separate", "sep.txt"), "bottom-up clustering");

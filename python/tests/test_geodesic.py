@@ -91,7 +91,9 @@ def test_layout_auto_sorts_faces_stored_in_blocks():
     solver = gsp.GeodesicSolver(V, Fb, optimize_layout="auto")
     assert solver.optimize_layout is True
     assert gsp.GeodesicSolver(V, F[np.argsort(F.min(axis=1), kind="stable")], optimize_layout="auto").optimize_layout is False
-    d = solver.distance(0)
+    # One thread: on two, GSP's order effects reach 2e-5 at a few vertices of this plane
+    # whatever the layout (measured with the faces as stored, too).
+    d = solver.distance(0, threads=1)
     np.testing.assert_allclose(d, np.linalg.norm(V - V[0], axis=1), rtol=1e-5, atol=1e-6)
 
 
