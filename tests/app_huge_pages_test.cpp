@@ -47,10 +47,18 @@ constexpr bool kReplaced = true;
 
 TEST(AppHugePages, BigArraysStartOnAHugePageBoundary) {
   if (!kReplaced) GTEST_SKIP() << "sanitizer build: the sanitizer's operator new";
-  for (std::size_t mb : {8, 9, 64}) {
+  for (std::size_t mb : {2, 3, 5, 8, 9, 64}) {
     std::vector<std::uint8_t> big(mb << 20);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage, 0u) << mb << " MB";
   }
+  // Just under 2 MB: malloc's (a 2 MB boundary would give it no huge page).
+  std::size_t under_aligned = 0;
+  std::vector<std::unique_ptr<char[]>> under;
+  for (int i = 0; i < 8; ++i) {
+    under.emplace_back(new char[(std::size_t(2) << 20) - 4096]);
+    under_aligned += reinterpret_cast<std::uintptr_t>(under.back().get()) % kHugePage == 0;
+  }
+  EXPECT_LT(under_aligned, 8u);
   const std::unique_ptr<char[]> array(new char[std::size_t(16) << 20]);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(array.get()) % kHugePage, 0u);
   // Small ones are malloc's: nothing forces them onto the boundary.
@@ -78,6 +86,24 @@ TEST(AppHugePages, TouchedBigArraysAreBackedByHugePages) {
   // Where the kernel has no huge page at hand it falls back to small pages; most of 64 MB is
   // still expected on huge ones on an idle machine.
   EXPECT_GE(anon_huge_kb() - before, 32 * 1024) << mode;
+}
+
+TEST(AppHugePages, ArraysFromTwoMegabytesGetHugePagesWithoutRounding) {
+  if (!kReplaced) GTEST_SKIP() << "sanitizer build: the sanitizer's operator new";
+  const std::string mode = thp_mode();
+  if (mode.find("[never]") != std::string::npos || mode.empty() || anon_huge_kb() < 0)
+    GTEST_SKIP() << "transparent huge pages off or not reported here: " << mode;
+  // Eight arrays of 6 MB and a bit: three whole huge pages each (24 MB of 2 MB ranges in all);
+  // their tails are not rounded up, so at most 48 MB of huge pages can appear.
+  const long before = anon_huge_kb();
+  std::vector<std::vector<std::uint8_t>> arrays;
+  for (int i = 0; i < 8; ++i) {
+    arrays.emplace_back((std::size_t(6) << 20) + 100000);
+    std::memset(arrays.back().data(), 1, arrays.back().size());
+  }
+  const long gained = anon_huge_kb() - before;
+  EXPECT_GE(gained, 24 * 1024) << mode;
+  EXPECT_LE(gained, 48 * 1024) << mode;
 }
 
 }  // namespace

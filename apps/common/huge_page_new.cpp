@@ -1,4 +1,4 @@
-// The apps' global operator new: allocations of 8 MB or more are aligned to 2 MB and advised
+// The apps' global operator new: allocations of 2 MB or more are aligned to 2 MB and advised
 // as transparent huge pages (madvise), every other one is plain malloc. Compiled into each app
 // (cmake/GspModule.cmake, gsp_app), never into a library: how a process allocates is the
 // program's choice, and a library that replaced operator new would impose it on its users.
@@ -12,6 +12,11 @@
 // rest without changing the library's types. glibc's free() releases aligned_alloc's memory,
 // so the library's (and libstdc++'s) operator delete needs no replacement. Where huge pages
 // are off, the advice is ignored; where they are always on, it changes nothing.
+//
+// A huge page is faulted in whole, so an array rounded up to whole huge pages wastes up to
+// 2 MB: from 8 MB (at most 25% of it) the array is rounded, and its tail is a huge page too;
+// from 2 MB to 8 MB it is not, so its whole 2 MB ranges are huge pages and its tail stays on
+// 4 KB pages, and no memory is wasted (docs/scale.md, "From 2 MB, not rounded").
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -33,12 +38,13 @@
 namespace {
 
 constexpr std::size_t kHugePage = std::size_t(2) << 20;
-constexpr std::size_t kHugeFrom = std::size_t(8) << 20;
+constexpr std::size_t kHugeFrom = std::size_t(2) << 20;
+constexpr std::size_t kRoundFrom = std::size_t(8) << 20;
 
 void* try_allocate(std::size_t n) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   if (n >= kHugeFrom) {
-    const std::size_t rounded = (n + kHugePage - 1) / kHugePage * kHugePage;
+    const std::size_t rounded = n >= kRoundFrom ? (n + kHugePage - 1) / kHugePage * kHugePage : n;
     if (void* p = std::aligned_alloc(kHugePage, rounded)) {
       madvise(p, rounded, MADV_HUGEPAGE);   // advice only: failure leaves ordinary pages
       return p;
