@@ -77,6 +77,8 @@ def run_mesh(args, path):
             cmd += ["--method", args.method]
         if args.cvt_tolerance is not None:
             cmd += ["--cvt-tolerance", str(args.cvt_tolerance)]
+        if args.sizing_angle is not None:
+            cmd += ["--sizing-angle", str(args.sizing_angle)]
         start = time.monotonic()
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
@@ -262,6 +264,7 @@ def main():
     ap.add_argument("--compare", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin",
                                                       "gsp-cvt-compare"))
     ap.add_argument("--method", choices=("cvt", "edges"), help="gsp-cvt's --method (default: gsp-cvt's default)")
+    ap.add_argument("--sizing-angle", type=float, help="gsp-cvt's --sizing-angle (default: gsp-cvt's default)")
     ap.add_argument("--cvt-tolerance", type=float, help="gsp-cvt's --tolerance (default: gsp-cvt's default)")
     ap.add_argument("--feature-angle", type=float, help="gsp-cvt's --feature-angle (default: gsp-cvt's default)")
     ap.add_argument("--cone-angle", type=float, help="gsp-cvt's --cone-angle (default: gsp-cvt's default)")

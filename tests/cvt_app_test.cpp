@@ -119,6 +119,23 @@ TEST(CvtApp, MethodEdges) {
   EXPECT_NEAR(double(mesh.mesh.num_vertices()), 600.0, 60.0);
 }
 
+// --sizing-angle: the edge remesh with a sizing field, the setting in the stats, the topology and
+// the count kept.
+TEST(CvtApp, MethodEdgesWithASizingField) {
+  ScratchDir dir("cvt");
+  const auto out = dir / "r.ply";
+  const RunResult r = run(kApp + " " + quote(kMesh) + " --vertices 600 --method edges --sizing-angle 57 " +
+                              "--hausdorff-samples 5000 -o " + quote(out.string()) + " --stats -",
+                          dir, kRemeshLimit);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const JsonValue stats = parse_json(r.out);
+  EXPECT_EQ(stats["settings"]["sizing_angle"].num, 57);
+  EXPECT_TRUE(stats["components"].items.at(0)["by_edge_operations"].b);
+  EXPECT_EQ(stats["topology"]["output"]["euler_characteristic"].num, -6);
+  EXPECT_TRUE(stats["topology"]["output"]["manifold"].b);
+  EXPECT_NEAR(double(io::read_mesh(out.string()).mesh.num_vertices()), 600.0, 60.0);
+}
+
 // Fewer vertices than a component is remeshed with: the remesh has 20, and stderr says why.
 TEST(CvtApp, TooFewVerticesAreRaisedAndSaid) {
   ScratchDir dir("cvt");
@@ -252,6 +269,7 @@ TEST(CvtApp, UsageErrorsExit2) {
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --regions r.txt" + o, dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method lloyd" + o, dir).exit_code, 2);
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --cone-angle 400" + o, dir).exit_code, 2);
+  EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --sizing-angle 200" + o, dir).exit_code, 2);
   // Edge operations make no regions.
   EXPECT_EQ(run(kApp + " " + quote(kMesh) + " --vertices 10 --method edges --regions r.ply" + o, dir).exit_code, 2);
   EXPECT_FALSE(fs::exists(dir / "r.obj"));

@@ -3,6 +3,7 @@
 #include "edge_remesh.hpp"
 
 #include "cvt_components.hpp"
+#include "cvt_farthest_point.hpp"
 #include "cvt_meshes.hpp"
 #include "helpers/mesh_builders.hpp"
 #include "test_data.hpp"
@@ -41,10 +42,7 @@ double expected_vertices(const TriangleMesh& m, double L) { return 2 * area_of(m
 
 // The largest distance of a remesh's vertex from the input surface.
 double farthest_vertex(const TriangleMesh& input, const TriangleMesh& remesh) {
-  const ClosestPointIndex index(input);
-  double d = 0;
-  for (const Vec3& p : remesh.positions) d = std::max(d, index.closest(p).distance);
-  return d;
+  return test::farthest_point(remesh.positions, input);
 }
 
 TEST(EdgeRemesh, ThinCadPlateKeepsItsGenusAndGetsWellShapedTriangles) {

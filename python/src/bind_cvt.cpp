@@ -78,8 +78,9 @@ Cvt run_cvt(const py::handle& V, const py::handle& F, const py::object& sites, c
 
 py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& vertices, const py::object& edge_length,
                  int iterations, std::uint64_t seed, bool flip, bool smooth, double feature_angle, unsigned threads,
-                 const py::object& progress, const std::string& method, double cone_angle) {
+                 const py::object& progress, const std::string& method, double cone_angle, double sizing_angle) {
   const TriangleMesh mesh = mesh_from_arrays(V, F);
+  if (!(sizing_angle >= 0 && sizing_angle <= 180)) throw py::value_error("sizing_angle must be in [0, 180] degrees");
   const cvt::RemeshMethod how = cvt::remesh_method(method);
   const cvt::CvtOptions o =
       cvt_options(mesh, vertices, edge_length, iterations, seed, "poisson", feature_angle, cone_angle, threads, progress,
@@ -90,6 +91,7 @@ py::tuple remesh(const py::handle& V, const py::handle& F, const py::object& ver
     cvt::SurfaceRemeshOptions so;
     so.cvt = o;
     so.method = how;
+    so.edge_sizing_angle = sizing_angle;
     so.remesh.flip_edges = flip;
     so.remesh.smooth = smooth;
     r = cvt::remesh_surface(mesh, so);
@@ -141,6 +143,7 @@ every run, see gsp-cvt --threads). progress(fraction) is called per iteration; C
         py::arg("smooth") = true, py::arg("feature_angle") = cvt::CvtOptions{}.feature_angle,
         py::arg("threads") = 0u, py::arg("progress") = py::none(), py::arg("method") = "cvt",
         py::arg("cone_angle") = cvt::CvtOptions{}.cone_angle,
+        py::arg("sizing_angle") = cvt::SurfaceRemeshOptions{}.edge_sizing_angle,
         R"(Isotropic remesh (gsp-cvt): the restricted Delaunay dual of a geodesic CVT, as (V2, F2).
 
 Exactly one of vertices (about that many output vertices) and edge_length. Each connected
@@ -154,7 +157,9 @@ remeshed (as gsp-cvt). flip and smooth are the angle-raising post-passes. featur
 kept in the remesh as chains of edges with their corners as vertices (gsp-cvt --feature-angle).
 cone_angle (degrees, 0 = off, the default; 240 is a good value): spike tips (interior vertices
 whose angles sum to less than it, at least half of it) are vertices of the remesh instead of
-being cut off (gsp-cvt --cone-angle).
+being cut off (gsp-cvt --cone-angle). sizing_angle (degrees, 0 = one spacing everywhere):
+edge operations make edges shorter where the surface bends tightly, each spanning at most this
+much of a bend, down to a quarter of the spacing (gsp-cvt --sizing-angle).
 threads: of the propagations (0 = automatic, where ties make large meshes vary slightly from
 run to run; 1 = the same output every run); components are remeshed side by side on them, with
 the one-thread result. progress(fraction) per Lloyd iteration; Ctrl-C stops it.

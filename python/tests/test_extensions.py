@@ -117,6 +117,22 @@ def test_remesh_by_edge_operations(fertility):
         gsp.remesh(V, F, vertices=800, method="isotropic")
 
 
+def test_remesh_by_edge_operations_with_a_sizing_field(fertility):
+    # Edges spanning at most 57 degrees of a bend (shorter in fertility's tight bends): the count
+    # asked for, genus 4 kept; an angle outside [0, 180] is refused.
+    V, F = fertility
+    V2, F2 = gsp.remesh(V, F, vertices=800, method="edges", sizing_angle=57, threads=1)
+    assert 720 < len(V2) < 880
+    e = np.concatenate([F2[:, [0, 1]], F2[:, [1, 2]], F2[:, [2, 0]]])
+    directed = {tuple(x) for x in e.tolist()}
+    assert len(directed) == len(e) and all((b, a) in directed for a, b in directed)
+    assert len(V2) - len(directed) // 2 + len(F2) == -6
+    V3, _ = gsp.remesh(V, F, vertices=800, method="edges", threads=1)
+    assert len(V2) != len(V3) or not np.array_equal(V2, V3)   # the field changed the remesh
+    with pytest.raises(ValueError, match="sizing_angle"):
+        gsp.remesh(V, F, vertices=800, method="edges", sizing_angle=200)
+
+
 def test_cvt_labels(fertility):
     V, F = fertility
     c = gsp.cvt(V, F, sites=200, iterations=5)

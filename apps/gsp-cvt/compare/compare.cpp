@@ -39,6 +39,7 @@ struct Options {
   double feature_angle = 0;
   double cone_angle = cvt::CvtOptions{}.cone_angle;
   std::string method = "cvt";
+  double sizing_angle = cvt::SurfaceRemeshOptions{}.edge_sizing_angle;
   double cvt_tolerance = cvt::CvtOptions().tolerance;
   std::size_t hausdorff_samples = 200000;
   cli::LoadOptions load;
@@ -123,6 +124,7 @@ Row gsp_remesh(const TriangleMesh& mesh, std::size_t wanted, const Options& o) {
   so.cvt.feature_angle = o.feature_angle;
   so.cvt.cone_angle = o.cone_angle;
   so.method = cvt::remesh_method(o.method);
+  so.edge_sizing_angle = o.sizing_angle;
   const auto t0 = Clock::now();
   const cvt::SurfaceRemeshResult r = cvt::remesh_surface(mesh, so);
   row.mesh = r.mesh;
@@ -241,6 +243,8 @@ int main(int argc, char** argv) {
         app.add_option("--cone-angle", o.cone_angle, "gsp-cvt's --cone-angle (default 0: off)")->check(CLI::Range(0.0, 360.0));
         app.add_option("--method", o.method, "gsp-cvt's --method (cvt or edges; default cvt)")
             ->check(CLI::IsMember({"cvt", "edges"}));
+        app.add_option("--sizing-angle", o.sizing_angle, "gsp-cvt's --sizing-angle (degrees; 0: one spacing)")
+            ->check(CLI::Range(0.0, 180.0));
         app.add_option("--cgal-iterations", o.cgal_iterations, "CGAL remeshing iterations (default 5)");
         app.add_option("--count-runs", o.count_runs, "CGAL runs to match the vertex count (default 3; the last is timed)")
             ->check(CLI::PositiveNumber);

@@ -30,6 +30,7 @@ struct Options {
   int iterations = 50;
   double tolerance = 1e-4, over_relaxation = 1.6, smooth_below = 40.0, feature_angle = 0.0;
   double cone_angle = cvt::CvtOptions{}.cone_angle;
+  double sizing_angle = cvt::SurfaceRemeshOptions{}.edge_sizing_angle;
   std::uint64_t seed = 1;
   std::size_t hausdorff_samples = 200000;
   unsigned threads = 0;
@@ -78,6 +79,10 @@ void add_options(CLI::App& app, Options& o) {
                  "half of it gets a fixed site, so the tip is a vertex of the remesh instead of being cut off "
                  "(0 = off, the default; 240 is a good value)")
       ->check(CLI::Range(0.0, 360.0));
+  app.add_option("--sizing-angle", o.sizing_angle,
+                 "edge operations: shorter edges where the surface bends tightly, each spanning at most this many "
+                 "degrees of a bend, down to a quarter of the spacing (0 = one spacing everywhere)")
+      ->check(CLI::Range(0.0, 180.0));
   app.add_flag("--no-fix", o.no_fix, "do not repair regions that are not disks (split, annuli)");
   app.add_flag("--no-planar-flips", o.no_planar_flips,
                "keep the working mesh's slivers inside planes (CAD fans) instead of flipping them to Delaunay "
@@ -131,6 +136,7 @@ void run(cli::Context& ctx, const Options& o) {
   co.feature_angle = o.feature_angle;
   co.cone_angle = o.cone_angle;
   so.method = cvt::remesh_method(o.method);
+  so.edge_sizing_angle = o.sizing_angle;
   ctx.settings()["method"] = o.method == "cvt" ? "lloyd-gsp" : "edges";
   if (o.vertices) ctx.settings()["vertices"] = o.vertices;
   else ctx.settings()["edge_length"] = co.edge_length;
@@ -145,6 +151,7 @@ void run(cli::Context& ctx, const Options& o) {
   ctx.settings()["planar_flips"] = co.planar_flips;
   ctx.settings()["feature_angle"] = o.feature_angle;
   ctx.settings()["cone_angle"] = o.cone_angle;
+  ctx.settings()["sizing_angle"] = o.sizing_angle;
   ctx.settings()["flip_edges"] = !o.no_flip;
   ctx.settings()["smooth"] = !o.no_smooth;
   ctx.settings()["smooth_below"] = o.smooth_below;

@@ -1,5 +1,6 @@
 #include "edge_remesh.hpp"
 
+#include "sizing_field.hpp"
 #include "triangle_geometry.hpp"
 
 #include <gsp/cvt/features.hpp>
@@ -44,10 +45,11 @@ class Remesher {
  public:
   Remesher(Mesh& m, const TriangleMesh& input, const ClosestPointIndex& surface, double length, double feature_angle_deg,
            std::size_t max_vertices, EdgeRemeshStats& stats)
-      : m_(m), input_(input), surface_(surface), high_(4.0 / 3.0 * length), low_(4.0 / 5.0 * length),
+      : m_(m), input_(input), surface_(surface), length_(length),
         feature_cos_(std::cos(feature_angle_deg * M_PI / 180)), max_vertices_(max_vertices), stats_(stats) {
     m_.add_property(hint);
     m_.add_property(feature_);
+    m_.add_property(share_);
   }
 
   // The feature lines: boundary edges, and the input's crease curves (detect_features: edges
@@ -77,9 +79,24 @@ class Remesher {
   }
 
   // The spacing for the next rounds.
-  void set_length(double length) {
-    high_ = 4.0 / 3.0 * length;
-    low_ = 4.0 / 5.0 * length;
+  void set_length(double length) { length_ = length; }
+
+  // The input's edges on feature lines (as input vertex indices: called before any operation).
+  std::vector<std::pair<Index, Index>> feature_edges() const {
+    std::vector<std::pair<Index, Index>> out;
+    for (Mesh::EdgeHandle e : m_.edges())
+      if (m_.property(feature_, e)) {
+        const Mesh::HalfedgeHandle h = m_.halfedge_handle(e, 0);
+        out.emplace_back(Index(m_.from_vertex_handle(h).idx()), Index(m_.to_vertex_handle(h).idx()));
+      }
+    return out;
+  }
+
+  // Each input vertex's share of the spacing (curvature_sizing); empty: every share is 1.
+  void set_sizing(std::vector<double> input_share) {
+    input_share_ = std::move(input_share);
+    for (Mesh::VertexHandle v : m_.vertices())
+      m_.property(share_, v) = input_share_.empty() ? 1.0 : input_share_[std::size_t(v.idx())];
   }
 
   // One round; false where the splits reached the vertex cap.
@@ -137,6 +154,18 @@ class Remesher {
  private:
   double length(Mesh::EdgeHandle e) const { return m_.calc_edge_length(e); }
 
+  // The spacing between a and b: L times the mean of their shares.
+  double spacing(Mesh::VertexHandle a, Mesh::VertexHandle b) const {
+    return length_ * (0.5 * (m_.property(share_, a) + m_.property(share_, b)));
+  }
+  double high(Mesh::VertexHandle a, Mesh::VertexHandle b) const { return 4.0 / 3.0 * spacing(a, b); }
+  double low(Mesh::VertexHandle a, Mesh::VertexHandle b) const { return 4.0 / 5.0 * spacing(a, b); }
+  // An edge's length over its upper limit: above 1 it is split.
+  double excess(Mesh::EdgeHandle e) const {
+    const Mesh::HalfedgeHandle h = m_.halfedge_handle(e, 0);
+    return length(e) / high(m_.from_vertex_handle(h), m_.to_vertex_handle(h));
+  }
+
   // Every edge longer than 4/3 L split at its middle, the longest first (as in Rivara's
   // bisection: a sliver is cut across, not fanned from its far corner, which in file order
   // made millions of vertices out of a CAD part's fans of needles). False where the vertex
@@ -144,25 +173,27 @@ class Remesher {
   bool split_long_edges() {
     std::priority_queue<std::pair<double, unsigned>> heap;
     for (Mesh::EdgeHandle e : m_.edges())
-      if (const double l = length(e); l > high_) heap.emplace(l, unsigned(e.idx()));
+      if (const double x = excess(e); x > 1) heap.emplace(x, unsigned(e.idx()));
     while (!heap.empty()) {
-      const auto [l, i] = heap.top();
+      const auto [x, i] = heap.top();
       heap.pop();
       const Mesh::EdgeHandle e = m_.edge_handle(i);
-      if (m_.status(e).deleted() || length(e) != l) continue;   // split since (its pieces are queued)
+      if (m_.status(e).deleted() || excess(e) != x) continue;   // split since (its pieces are queued)
       if (m_.n_vertices() >= max_vertices_) return false;
       const Mesh::HalfedgeHandle h = m_.halfedge_handle(e, 0);
       const Mesh::VertexHandle a = m_.from_vertex_handle(h), b = m_.to_vertex_handle(h);
       const bool feature = m_.property(feature_, e);
+      const double share = 0.5 * (m_.property(share_, a) + m_.property(share_, b));
       const Mesh::VertexHandle v = m_.split(e, 0.5 * (m_.point(a) + m_.point(b)));
       m_.property(hint, v) = m_.property(hint, a);
+      m_.property(share_, v) = share;
       for (Mesh::HalfedgeHandle o : m_.voh_range(v)) {   // the two halves of a feature edge stay feature
         const Mesh::VertexHandle w = m_.to_vertex_handle(o);
         m_.property(feature_, m_.edge_handle(o)) = feature && (w == a || w == b);
       }
       ++stats_.splits;
       for (Mesh::EdgeHandle f : m_.ve_range(v))
-        if (const double lf = length(f); lf > high_) heap.emplace(lf, unsigned(f.idx()));
+        if (const double xf = excess(f); xf > 1) heap.emplace(xf, unsigned(f.idx()));
     }
     return true;
   }
@@ -179,7 +210,7 @@ class Remesher {
     // The length limit first: it refuses most collapses, and OpenMesh's link condition (half
     // of the remesh's time on demosthenes when asked first) is dearer.
     for (Mesh::VertexHandle w : m_.vv_range(from))
-      if (limit_length && w != to && (m_.point(w) - target).norm() > high_) return false;
+      if (limit_length && w != to && (m_.point(w) - target).norm() > high(to, w)) return false;
     if (!m_.is_collapse_ok(h)) return false;
     for (Mesh::FaceHandle f : m_.vf_range(from)) {
       Mesh::VertexHandle x[3];
@@ -214,8 +245,9 @@ class Remesher {
     bool any = false;
     for (std::size_t i = 0; i < m_.n_edges(); ++i) {
       const Mesh::EdgeHandle e = m_.edge_handle(static_cast<unsigned>(i));
-      if (m_.status(e).deleted() || !(length(e) < low_)) continue;
+      if (m_.status(e).deleted()) continue;
       const Mesh::HalfedgeHandle h0 = m_.halfedge_handle(e, 0), h1 = m_.halfedge_handle(e, 1);
+      if (!(length(e) < low(m_.from_vertex_handle(h0), m_.to_vertex_handle(h0)))) continue;
       // The end on fewer feature edges goes (an interior vertex to a feature line, not the
       // line's vertex inward).
       const bool first = feature_degree(m_.from_vertex_handle(h0)) <= feature_degree(m_.from_vertex_handle(h1));
@@ -393,19 +425,26 @@ class Remesher {
       // duplicate vertex, and the component was kept).
       const P q(c.position.x, c.position.y, c.position.z);
       bool taken = false;
-      for (Mesh::VertexHandle w : m_.vv_range(v)) taken |= (m_.point(w) - q).norm() <= 1e-6 * low_;
+      for (Mesh::VertexHandle w : m_.vv_range(v)) taken |= (m_.point(w) - q).norm() <= 1e-6 * low(v, w);
       if (taken) continue;
       m_.point(v) = q;
       m_.property(hint, v) = c.point.element;
+      if (!input_share_.empty()) {   // the share where it landed, interpolated over the input face
+        const Vec3 &a = input_.positions[t[0]], &b = input_.positions[t[1]], &d = input_.positions[t[2]];
+        const std::array<double, 3> w = closest_point_on_triangle(c.position, a, b, d);
+        m_.property(share_, v) = w[0] * input_share_[t[0]] + w[1] * input_share_[t[1]] + w[2] * input_share_[t[2]];
+      }
     }
   }
 
   Mesh& m_;
   const TriangleMesh& input_;
   const ClosestPointIndex& surface_;
-  double high_, low_;
+  double length_;   // the spacing L where the share is 1
   double feature_cos_;
   OpenMesh::EPropHandleT<bool> feature_;   // per edge: on a feature line
+  OpenMesh::VPropHandleT<double> share_;   // per vertex: its share of L (1 without a sizing field)
+  std::vector<double> input_share_;        // per input vertex; empty without a sizing field
   std::size_t max_vertices_;
   EdgeRemeshStats& stats_;
 };
@@ -435,7 +474,8 @@ TriangleMesh to_triangle_mesh(const Mesh& m) {
 
 TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
                                        double target_length, double feature_angle_deg, int iterations,
-                                       std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats* stats) {
+                                       std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats* stats,
+                                       const SizingOptions* sizing) {
   Mesh m;
   m.request_vertex_status();
   m.request_edge_status();
@@ -455,6 +495,9 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   }
   // Vertices of no face (none in a component) would stay isolated: dropped by the export below.
   r.mark_features(input, feature_angle_deg, target_length);
+  const std::vector<double> share =
+      sizing ? curvature_sizing(input, r.feature_edges(), target_length, *sizing) : std::vector<double>{};
+  r.set_sizing(share);
   // Edges within [4/5, 4/3] of a spacing L average below L on a curved or bounded surface, and
   // crease lines add vertices: L from the area alone gave 10-40% more vertices than asked for
   // (spot 5,259, demosthenes 6,987 at 5,000). The count goes as 1 / L^2, so after each of the
@@ -475,12 +518,13 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   const TriangleMesh out = to_triangle_mesh(m);
   // A remesh with the topology can still have folded onto one side of a thin part (collapses
   // move vertices; the projection keeps them on the input, not spread over it): every input
-  // vertex must lie within two spacings of it.
+  // vertex must lie within two spacings of it (of its own spacing, with a sizing field).
   if (out.triangles.empty()) return out;
   const ClosestPointIndex index(out);
   Index hint = kInvalidIndex;
-  for (const Vec3& p : input.positions)
-    if (!index.within(p, 2 * std::max(length, target_length), hint)) return {};
+  const double spacing = std::max(length, target_length);
+  for (std::size_t v = 0; v < input.num_vertices(); ++v)
+    if (!index.within(input.positions[v], 2 * spacing * (share.empty() ? 1.0 : share[v]), hint)) return {};
   return out;
 }
 

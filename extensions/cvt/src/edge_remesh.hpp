@@ -11,6 +11,8 @@
 // Why not CGAL's isotropic_remeshing: gsp::cvt is in the permissive part of the toolkit (CGAL
 // is GPL and stays in gsp-cvt-compare). The connectivity operations and their checks are
 // OpenMesh's (BSD); the loop around them, the geometric checks and the projection are ours.
+#include "sizing_field.hpp"
+
 #include <gsp/cvt/closest_point_index.hpp>
 #include <gsp/mesh.hpp>
 
@@ -32,10 +34,11 @@ struct EdgeRemeshStats {
 // faces, the splits would pass max_vertices, or an input vertex ends farther than two
 // spacings from the remesh (a fold onto one side of a thin part); the caller then keeps what
 // it had. target_vertices > 0: the spacing is corrected in the first rounds so that the remesh
-// ends near that many vertices.
+// ends near that many vertices. sizing: edges shorter where the input bends tightly
+// (sizing_field.hpp); null: one spacing everywhere.
 TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
                                        double target_length, double feature_angle_deg, int iterations,
                                        std::size_t max_vertices, std::size_t target_vertices = 0,
-                                       EdgeRemeshStats* stats = nullptr);
+                                       EdgeRemeshStats* stats = nullptr, const SizingOptions* sizing = nullptr);
 
 }  // namespace gsp::cvt::detail

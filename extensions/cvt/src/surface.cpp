@@ -158,6 +158,8 @@ SurfaceRemeshResult remesh_surface(const TriangleMesh& mesh, const SurfaceRemesh
   if (co.edge_length > 0 && !std::isfinite(co.edge_length)) throw InvalidInput("cvt: the edge length must be finite");
   if (!(options.retry_defect_fraction >= 0))
     throw InvalidInput("cvt: the retries' defect fraction must be 0 or more");
+  if (!(options.edge_sizing_angle >= 0 && options.edge_sizing_angle <= 180))
+    throw InvalidInput("cvt: the sizing angle must be in [0, 180] degrees");
   // The surface the input describes (described_surface): its seams closed, each face once, and
   // one vertex per fan where fans touch at a vertex.
   const VertexStitch seams = stitch_boundary_vertices(mesh);

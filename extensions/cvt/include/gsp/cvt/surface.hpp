@@ -84,6 +84,12 @@ struct SurfaceRemeshOptions {
   // of edges in a remesh by edge operations (CvtOptions::feature_angle instead where that is
   // set): a CAD part's corners and edges kept instead of rounded off.
   double edge_feature_angle = 40;
+  // Edges of a remesh by edge operations shorter where the input bends tighter than the spacing
+  // can follow: an edge spans at most this many degrees of a bend, down to a quarter of the
+  // spacing (fingers and rods thinner than an edge, which one spacing folds onto one side
+  // of themselves). 0: one spacing everywhere (docs/cvt.md, "A sizing field for the edge
+  // remesh").
+  double edge_sizing_angle = 0;
 };
 
 enum class ComponentOutcome {
