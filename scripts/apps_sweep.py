@@ -108,6 +108,9 @@ def random_jobs(out, facts, rng, count):
                   "--faces-per-site", str(rng.choice([0, 1, 12, 30])), "--threads", str(rng.choice([0, 1]))] +
                  [f for f in ("--no-fix", "--no-flip", "--no-smooth") if rng.random() < 0.2] +
                  ["--regions", o("r.ply"), "-o", o("c.ply")]),
+        lambda: ("cvt", ["--vertices", str(rng.randrange(3, 800)), "--method", "edges", "--sizing-angle",
+                         str(rng.choice([0, 1, 20, 57, 180])), "--feature-angle", str(rng.choice([0, 40, 89])),
+                         "--threads", str(rng.choice([0, 1])), "-o", o("e.ply")]),
     ]
     apps = {"geodesic": "gsp-geodesic", "path": "gsp-path", "sample": "gsp-sample", "cvt": "gsp-cvt"}
     jobs = []
