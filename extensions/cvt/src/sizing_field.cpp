@@ -2,13 +2,14 @@
 
 #include "point_grid.hpp"
 
+#include <gsp/connectivity.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <queue>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace gsp::cvt::detail {
@@ -43,28 +44,20 @@ std::vector<double> curvature_sizing(const TriangleMesh& input, const std::vecto
     for (Index v : t) vertex_area[v] += area[f] / 3;
   }
 
-  // The two faces of each edge (a third one, which a component does not have, is ignored).
-  std::unordered_map<std::uint64_t, std::array<Index, 2>> faces;
-  faces.reserve(3 * nf / 2 + 1);
-  for (std::size_t f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const Triangle& t = input.triangles[f];
-      auto [it, fresh] = faces.try_emplace(edge_key(t[k], t[(k + 1) % 3]), std::array<Index, 2>{Index(f), kInvalidIndex});
-      if (!fresh && it->second[1] == kInvalidIndex) it->second[1] = Index(f);
-    }
-
   // The largest bend across a vertex's edges, and its neighbours (for the grading).
+  const Connectivity c = build_connectivity(input);
   std::vector<double> bend(nv, 0.0);
   std::vector<std::vector<Index>> neighbours(nv);
-  for (const auto& [key, pair] : faces) {
-    const Index a = Index(key >> 32), b = Index(key & 0xFFFFFFFFu);
+  for (std::size_t e = 0; e < c.num_edges(); ++e) {
+    const Index h = c.edge_halfedge[e], o = c.radial_next[h];
+    const Index a = from_vertex(input, h), b = to_vertex(input, h);
     neighbours[a].push_back(b);
     neighbours[b].push_back(a);
-    if (pair[1] == kInvalidIndex || feature.count(key)) continue;
-    const double width = area[pair[0]] + area[pair[1]];
+    if (o == h || feature.count(edge_key(a, b))) continue;   // a boundary edge, or a crease
+    const Index f1 = face_of(h), f2 = face_of(o);
+    const double width = area[f1] + area[f2];
     if (!(width > 0)) continue;
-    const Vec3 n1 = unit[pair[0]], n2 = unit[pair[1]];
-    const double theta = std::atan2(norm(cross(n1, n2)), dot(n1, n2));
+    const double theta = std::atan2(norm(cross(unit[f1], unit[f2])), dot(unit[f1], unit[f2]));
     const double kappa = theta * distance(input.positions[a], input.positions[b]) / width;
     bend[a] = std::max(bend[a], kappa);
     bend[b] = std::max(bend[b], kappa);
