@@ -214,6 +214,57 @@ TEST(CvtClosestPoint, TiesGoToTheLowestFaceFromAnyHint) {
   }
 }
 
+// An index over a mesh whose edges were flipped after it was built (positions kept), asked
+// besides the flipped faces (ClosestPointIndex::on_face, ties to the lower face), answers as
+// an index built anew does, to the last bit: the cap flips of the post-pass rely on it.
+TEST(CvtClosestPoint, FlippedFacesAskedBesideAStaleIndex) {
+  for (const TriangleMesh& original : {fertility(), test::square_grid(8)}) {
+    TriangleMesh m = original;
+    const cvt::ClosestPointIndex stale(m);
+    std::map<std::pair<Index, Index>, Index> directed;   // (a, b) -> face
+    for (Index f = 0; f < m.num_faces(); ++f)
+      for (int k = 0; k < 3; ++k) directed[{m.triangles[f][k], m.triangles[f][(k + 1) % 3]}] = f;
+    std::vector<Index> flipped;
+    sampling::Random random(5);
+    for (int tries = 0; tries < 400 && flipped.size() < 40; ++tries) {
+      const Index f = Index(random.uniform() * double(m.num_faces())) % Index(m.num_faces());
+      const Triangle t = m.triangles[f];
+      const Index a = t[0], b = t[1], c = t[2];
+      const auto twin = directed.find({b, a});
+      if (twin == directed.end()) continue;
+      const Index g = twin->second;
+      Index d = kInvalidIndex;
+      for (Index k : m.triangles[g])
+        if (k != a && k != b) d = k;
+      if (d == kInvalidIndex || directed.count({c, d}) || directed.count({d, c})) continue;
+      for (const Triangle& old : {m.triangles[f], m.triangles[g]})
+        for (int k = 0; k < 3; ++k) directed.erase({old[k], old[(k + 1) % 3]});
+      m.triangles[f] = {a, d, c};
+      m.triangles[g] = {d, b, c};
+      for (Index h : {f, g})
+        for (int k = 0; k < 3; ++k) directed[{m.triangles[h][k], m.triangles[h][(k + 1) % 3]}] = h;
+      flipped.push_back(f), flipped.push_back(g);
+    }
+    ASSERT_GE(flipped.size(), 20u);
+    const cvt::ClosestPointIndex fresh(m);
+    std::vector<Vec3> points;
+    const BoundingBox box = bounding_box(m);
+    for (int i = 0; i < 300; ++i) points.push_back(point_around(box, random));
+    for (Index f : flipped)   // on and just off the flipped faces, and at their corners (ties)
+      for (Index v : m.triangles[f]) points.push_back(m.positions[v]), points.push_back(m.positions[v] + Vec3{0, 0, 0.01});
+    for (const Vec3& p : points) {
+      ClosestPoint best = stale.closest(p);
+      for (Index h : flipped) {
+        const ClosestPoint r = stale.on_face(h, p);
+        if (r.distance < best.distance || (r.distance == best.distance && h < best.point.element)) best = r;
+      }
+      const ClosestPoint want = fresh.closest(p);
+      EXPECT_EQ(best.point.element, want.point.element);
+      EXPECT_EQ(best.distance, want.distance);
+    }
+  }
+}
+
 TEST(CvtHausdorff, ShiftedSquares) {
   const TriangleMesh a = test::square_grid(6);
   TriangleMesh b = test::square_grid(3);

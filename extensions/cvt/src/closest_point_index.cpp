@@ -37,7 +37,7 @@ struct Query {
 };
 
 // Where on face f the closest point to p lies, and how far.
-ClosestPoint on_face(const TriangleMesh& mesh, Index f, Vec3 p) {
+ClosestPoint face_point(const TriangleMesh& mesh, Index f, Vec3 p) {
   const Triangle& t = mesh.triangles[f];
   const Vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
   const std::array<double, 3> w = closest_point_on_triangle(p, a, b, c);
@@ -55,7 +55,7 @@ float search_radius(double d, double slack) { return float(d * (1 + 1e-5) + slac
 bool query_triangle(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<Query*>(args->userPtr);
   const Index f = (*q->faces)[args->primID];
-  const ClosestPoint r = on_face(*q->mesh, f, q->p);
+  const ClosestPoint r = face_point(*q->mesh, f, q->p);
   // Ties (a point on an edge is as near to both faces) go to the lower face index, so the
   // answer does not depend on the order in which the BVH, built in parallel, is walked (nor
   // on the hint the search started from): the radius keeps the tied faces' boxes in reach.
@@ -78,7 +78,7 @@ bool query_within(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<WithinQuery*>(args->userPtr);
   if (q->found) return false;
   const Index f = (*q->faces)[args->primID];
-  if (!(on_face(*q->mesh, f, q->p).distance <= q->r)) return false;
+  if (!(face_point(*q->mesh, f, q->p).distance <= q->r)) return false;
   q->found = true;
   q->face = f;
   args->query->radius = 0;   // nothing more to look at
@@ -127,6 +127,8 @@ ClosestPointIndex::~ClosestPointIndex() = default;
 
 ClosestPoint ClosestPointIndex::closest(Vec3 p) const { return closest(p, kInvalidIndex); }
 
+ClosestPoint ClosestPointIndex::on_face(Index f, Vec3 p) const { return face_point(impl_->mesh, f, p); }
+
 ClosestPoint ClosestPointIndex::closest(Vec3 p, Index hint) const {
   const Impl& s = *impl_;
   Query q{this, &s.mesh, &s.faces, p, {}, s.slack};
@@ -137,7 +139,7 @@ ClosestPoint ClosestPointIndex::closest(Vec3 p, Index hint) const {
   pq.time = 0;
   pq.radius = std::numeric_limits<float>::infinity();
   if (hint != kInvalidIndex) {
-    q.best = on_face(s.mesh, hint, p);
+    q.best = face_point(s.mesh, hint, p);
     pq.radius = search_radius(q.best.distance, s.slack);
   }
   RTCPointQueryContext context;
@@ -156,7 +158,7 @@ bool ClosestPointIndex::within(Vec3 p, double r) const {
 bool ClosestPointIndex::within(Vec3 p, double r, Index& hint) const {
   const Impl& s = *impl_;
   if (!(r >= 0)) return false;
-  if (hint != kInvalidIndex && on_face(s.mesh, hint, p).distance <= r) return true;
+  if (hint != kInvalidIndex && face_point(s.mesh, hint, p).distance <= r) return true;
   WithinQuery q{&s.mesh, &s.faces, p, r, false, kInvalidIndex};
   const Vec3 local = p - s.origin;
   RTCPointQuery pq;

@@ -172,7 +172,7 @@ std::size_t delaunay_flips_in_planes(TriangleMesh& m, double max_height, std::si
 
 std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg,
                         const std::function<bool(Index, Index, Index, Index, Index, Index)>& keeps_surface,
-                        const std::function<void()>& flipped) {
+                        const std::function<void(Index, Index, bool)>& flipped) {
   const double cap = cap_angle_deg * 3.14159265358979323846 / 180.0;
   DirectedEdges directed(m);
   std::size_t flips = 0;
@@ -197,7 +197,7 @@ std::size_t remove_caps(TriangleMesh& m, double cap_angle_deg,
       if (!keeps_surface(f, g, a, b, c, d)) continue;
       directed.flip(m, f, g, a, b, c, d);
       ++flips;
-      flipped();
+      flipped(f, g, directed.unique);
       break;
     }
   return flips;

@@ -58,11 +58,12 @@ std::size_t delaunay_flips_in_planes(TriangleMesh& mesh, double max_height, std:
 // smallest angles, both new triangles face the way the pair faces on the whole, the new edge
 // does not exist yet, and `keeps_surface(f, g, a, b, c, d)` agrees: faces f = (a, b, c) and
 // g = (b, a, d) would become (a, d, c) and (d, b, c) (the caller checks that the surface stays
-// close to the input, both ways). `flipped()` is called after each flip. Unlike
+// close to the input, both ways). `flipped(f, g, unique)` is called after each flip (`unique`:
+// no directed edge of the mesh is in two faces, DirectedEdges::unique). Unlike
 // improve_by_flips no normal limit: the restricted Delaunay dual of a thin fold makes such
 // caps, and the flip is what removes them. Returns the number of flips.
 std::size_t remove_caps(TriangleMesh& mesh, double cap_angle_deg,
                         const std::function<bool(Index, Index, Index, Index, Index, Index)>& keeps_surface,
-                        const std::function<void()>& flipped);
+                        const std::function<void(Index, Index, bool)>& flipped);
 
 }  // namespace gsp::cvt::detail

@@ -23,6 +23,12 @@ class ClosestPointIndex {
   // near p: the search starts bounded by the hint's distance instead of unbounded. Searches
   // of points close together (a vertex's candidate positions) pass the last answer's face.
   ClosestPoint closest(Vec3 p, Index hint) const;
+  // The closest point to p on face f alone, computed as the searches compute it: a caller
+  // whose faces changed since the index was built (edge flips, positions kept) takes the
+  // nearer of closest(p) and these for the changed faces, with ties to the lower face, and
+  // gets what an index built anew would answer (the changed faces' boxes are stale, the
+  // others' are not).
+  ClosestPoint on_face(Index f, Vec3 p) const;
   // Whether a triangle lies within distance r of p (closest(p).distance <= r, decided in the
   // same double precision), found faster: the search is bounded by r and stops at the first.
   bool within(Vec3 p, double r) const;
