@@ -113,6 +113,35 @@ TEST(SizingField, HandleThinnerThanTheSpacingKeepsItsShape) {
   EXPECT_GE(measure_mesh_quality(sized).min_angle, 20.0);
 }
 
+// Around the far vertices the share is cut to the factor times theirs, graded back by 0.2 per
+// spacing of straight-line distance, never below the floor; vertices beyond the reach keep
+// theirs, and a share already smaller stays.
+TEST(SizingField, RefinedAroundFarVertices) {
+  const TriangleMesh square = test::square_grid(40);   // the unit square, vertex spacing 1/40
+  const double L = 0.1;
+  std::vector<double> share;   // empty: 1 everywhere
+  Index centre = 0, low = 0;
+  for (Index v = 0; v < square.num_vertices(); ++v) {
+    if (distance(square.positions[v], Vec3{0.5, 0.5, 0}) < 1e-9) centre = v;
+    if (distance(square.positions[v], Vec3{0.9, 0.9, 0}) < 1e-9) low = v;
+  }
+  detail::refine_around(square, {centre}, L, 0.5, 0.2, 0.125, share);
+  ASSERT_EQ(share.size(), square.num_vertices());
+  for (Index v = 0; v < square.num_vertices(); ++v) {
+    const double d = distance(square.positions[v], square.positions[centre]);
+    EXPECT_NEAR(share[v], std::min(1.0, 0.5 + 0.2 * d / L), 1e-12) << "vertex " << v;
+  }
+  // Again at the centre: halved again (0.25), then the floor (0.125) holds.
+  detail::refine_around(square, {centre}, L, 0.5, 0.2, 0.125, share);
+  EXPECT_DOUBLE_EQ(share[centre], 0.25);
+  share[low] = 0.01;
+  detail::refine_around(square, {centre, centre}, L, 0.5, 0.2, 0.125, share);
+  EXPECT_DOUBLE_EQ(share[centre], 0.125);
+  EXPECT_DOUBLE_EQ(share[low], 0.01);
+  for (Index v = 0; v < square.num_vertices(); ++v)
+    if (distance(square.positions[v], square.positions[centre]) > 0.875 / 0.2 * L + 1e-9) EXPECT_TRUE(share[v] == 1.0 || v == low);
+}
+
 TEST(SizingField, RemeshSurfaceRefusesAnAngleOutOfRange) {
   SurfaceRemeshOptions o;
   o.cvt.sites = 100;

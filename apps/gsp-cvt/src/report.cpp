@@ -97,6 +97,7 @@ void report_remesh(cli::Context& ctx, const cvt::SurfaceRemeshResult& remesh, co
   res["pulls"] = remesh.remesh_stats.pulls;
   res["far_point_insertions"] = remesh.remesh_stats.far_point_insertions;
   res["far_point_attempts"] = remesh.remesh_stats.far_point_attempts;
+  res["fold_refinements"] = remesh.remesh_stats.fold_refinements;
   ctx.stats()["topology"]["input"] = cli::topology_json(input);
   ctx.stats()["topology"]["output"] = cli::topology_json(output);
   cli::Json& list = ctx.stats()["components"] = cli::Json::array();

@@ -59,13 +59,15 @@ TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, s
   const double feature_angle = co.feature_angle > 0 ? co.feature_angle : options.edge_feature_angle;
   SizingOptions sizing;
   sizing.radians_per_edge = options.edge_sizing_angle * M_PI / 180;
+  EdgeRemeshStats edge_stats;
   TriangleMesh edges = remesh_by_edge_operations(oriented, surface, length, feature_angle, options.edge_iterations, cap,
-                                                 sites, nullptr, sizing.radians_per_edge > 0 ? &sizing : nullptr);
+                                                 sites, &edge_stats, sizing.radians_per_edge > 0 ? &sizing : nullptr);
   // The fold check is stricter with a sizing field (two of a vertex's own spacings): where it
   // refuses, one spacing everywhere is tried as without the field (a genus-73 scan's handles at
   // 5,000 vertices: docs/cvt.md, "A sizing field for the edge remesh").
   if (edges.triangles.empty() && sizing.radians_per_edge > 0)
-    edges = remesh_by_edge_operations(oriented, surface, length, feature_angle, options.edge_iterations, cap, sites);
+    edges = remesh_by_edge_operations(oriented, surface, length, feature_angle, options.edge_iterations, cap, sites,
+                                      &edge_stats);
   if (edges.triangles.empty()) {
     why = "no remesh by edge operations (too many splits, or a fold)";
     return {};
@@ -83,6 +85,7 @@ TriangleMesh edge_operations_remesh(const TriangleMesh& oriented, double area, s
   improve_remesh(improved, no_sites, oriented, bounding_box(oriented).diagonal(), sites, options.remesh, nullptr, post,
                  &surface);
   if (same_topology_per_component(oriented, improved)) edges = std::move(improved), remesh_stats = post;
+  remesh_stats.fold_refinements = edge_stats.fold_refinements;
   const MeshQuality q = measure_mesh_quality(edges), input_q = measure_mesh_quality(oriented);
   if (q.min_angle < std::min(kMinAngleDeg, input_q.min_angle)) {
     why = "the remesh by edge operations had a smallest angle of " + fixed2(q.min_angle, " degrees") + ", below the input's";

@@ -472,10 +472,23 @@ TriangleMesh to_triangle_mesh(const Mesh& m) {
 
 }  // namespace
 
-TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
-                                       double target_length, double feature_angle_deg, int iterations,
-                                       std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats* stats,
-                                       const SizingOptions* sizing) {
+namespace {
+
+// What one remesh at given shares left: the mesh (empty where OpenMesh refused a face or the
+// splits passed the cap), the spacing it ended at, and whether it folded.
+struct Pass {
+  TriangleMesh out;
+  double spacing = 0;
+  bool folded = false;
+};
+
+// The remesh at the shares `share` (empty: one spacing everywhere; on the first pass the sizing
+// field, when asked for, is computed into it and into `asked`: the shares the fold check holds
+// every pass to).
+Pass remesh_once(const TriangleMesh& input, const ClosestPointIndex& surface, double target_length, double feature_angle_deg,
+                 int iterations, std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats& stats,
+                 const SizingOptions* sizing, bool first, std::vector<double>& share, std::vector<double>& asked) {
+  Pass pass;
   Mesh m;
   m.request_vertex_status();
   m.request_edge_status();
@@ -486,17 +499,16 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
     const Vec3& x = input.positions[v];
     handle[v] = m.add_vertex(P(x.x, x.y, x.z));
   }
-  EdgeRemeshStats local;
-  Remesher r(m, input, surface, target_length, feature_angle_deg, max_vertices, stats ? *stats : local);
+  stats = {};
+  Remesher r(m, input, surface, target_length, feature_angle_deg, max_vertices, stats);
   for (std::size_t f = 0; f < input.num_faces(); ++f) {
     const Triangle& t = input.triangles[f];
-    if (!m.add_face(handle[t[0]], handle[t[1]], handle[t[2]]).is_valid()) return {};
+    if (!m.add_face(handle[t[0]], handle[t[1]], handle[t[2]]).is_valid()) return pass;
     for (int k = 0; k < 3; ++k) m.property(r.hint, handle[t[k]]) = Index(f);
   }
   // Vertices of no face (none in a component) would stay isolated: dropped by the export below.
   r.mark_features(input, feature_angle_deg, target_length);
-  const std::vector<double> share =
-      sizing ? curvature_sizing(input, r.feature_edges(), target_length, *sizing) : std::vector<double>{};
+  if (first && sizing) share = asked = curvature_sizing(input, r.feature_edges(), target_length, *sizing);
   r.set_sizing(share);
   // Edges within [4/5, 4/3] of a spacing L average below L on a curved or bounded surface, and
   // crease lines add vertices: L from the area alone gave 10-40% more vertices than asked for
@@ -504,7 +516,7 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   // first rounds the spacing is scaled by sqrt(count / target) and the later rounds settle.
   double length = target_length;
   for (int i = 0; i < iterations; ++i) {
-    if (!r.round()) return {};
+    if (!r.round()) return pass;
     if (target_vertices > 0 && i + 4 < iterations) {
       // n_vertices() counts the live vertices: a round deletes only in its collapses, which
       // collect their garbage.
@@ -514,18 +526,61 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   }
   r.clean_small_angles(5);
   m.garbage_collection();
-
-  const TriangleMesh out = to_triangle_mesh(m);
+  pass.out = to_triangle_mesh(m);
+  pass.spacing = std::max(length, target_length);
+  if (pass.out.triangles.empty()) return pass;
   // A remesh with the topology can still have folded onto one side of a thin part (collapses
   // move vertices; the projection keeps them on the input, not spread over it): every input
   // vertex must lie within two spacings of it (of its own spacing, with a sizing field).
-  if (out.triangles.empty()) return out;
-  const ClosestPointIndex index(out);
+  const ClosestPointIndex index(pass.out);
   Index hint = kInvalidIndex;
-  const double spacing = std::max(length, target_length);
+  for (std::size_t v = 0; v < input.num_vertices() && !pass.folded; ++v)
+    pass.folded = !index.within(input.positions[v], 2 * pass.spacing * (asked.empty() ? 1.0 : asked[v]), hint);
+  return pass;
+}
+
+// The input vertices farther than one of their own spacings (`share`: empty for 1) from a
+// remesh: the places the next pass refines.
+std::vector<Index> far_from(const TriangleMesh& input, const TriangleMesh& out, double spacing,
+                            const std::vector<double>& share) {
+  const ClosestPointIndex index(out);
+  std::vector<Index> far;
+  Index hint = kInvalidIndex;
   for (std::size_t v = 0; v < input.num_vertices(); ++v)
-    if (!index.within(input.positions[v], 2 * spacing * (share.empty() ? 1.0 : share[v]), hint)) return {};
-  return out;
+    if (!index.within(input.positions[v], spacing * (share.empty() ? 1.0 : share[v]), hint)) far.push_back(Index(v));
+  return far;
+}
+
+}  // namespace
+
+TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
+                                       double target_length, double feature_angle_deg, int iterations,
+                                       std::size_t max_vertices, std::size_t target_vertices, EdgeRemeshStats* stats,
+                                       const SizingOptions* sizing, int fold_refinements) {
+  EdgeRemeshStats local;
+  EdgeRemeshStats& st = stats ? *stats : local;
+  std::vector<double> share, asked;
+  // A remesh that folded onto one side of parts thinner than the spacing is made again with
+  // the spacing halved around the input vertices it left farther than their spacing away, and
+  // again while such vertices are left (twice at most): the spacing there then follows the
+  // part instead of cutting across it (docs/cvt.md, "Refined where the remesh folded", session
+  // 50). The fold check stays the one asked for; the last pass that passes it is kept.
+  TriangleMesh kept;
+  for (int refinement = 0;; ++refinement) {
+    Pass pass = remesh_once(input, surface, target_length, feature_angle_deg, iterations, max_vertices, target_vertices,
+                            st, sizing, refinement == 0, share, asked);
+    st.fold_refinements = std::size_t(refinement);
+    if (pass.out.triangles.empty()) return kept;
+    if (!pass.folded) {
+      if (refinement == 0) return std::move(pass.out);
+      kept = std::move(pass.out);
+      if (refinement >= fold_refinements) return kept;
+    }
+    if (refinement >= fold_refinements) return kept;
+    const std::vector<Index> far = far_from(input, pass.folded ? pass.out : kept, pass.spacing, share);
+    if (far.empty()) return kept;
+    refine_around(input, far, pass.spacing, 0.5, 0.2, 0.125, share);
+  }
 }
 
 }  // namespace gsp::cvt::detail

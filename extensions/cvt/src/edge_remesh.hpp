@@ -22,7 +22,8 @@ namespace gsp::cvt::detail {
 
 struct EdgeRemeshStats {
   std::size_t feature_edges = 0;   // crease edges of the input kept as feature lines (boundaries not counted)
-  std::size_t splits = 0, collapses = 0, flips = 0;
+  std::size_t splits = 0, collapses = 0, flips = 0;   // of the last pass
+  std::size_t fold_refinements = 0;   // passes made again, refined where the one before folded
 };
 
 // `input`: a manifold, consistently oriented component; `surface` indexes `input` (the
@@ -35,10 +36,14 @@ struct EdgeRemeshStats {
 // spacings from the remesh (a fold onto one side of a thin part); the caller then keeps what
 // it had. target_vertices > 0: the spacing is corrected in the first rounds so that the remesh
 // ends near that many vertices. sizing: edges shorter where the input bends tightly
-// (sizing_field.hpp); null: one spacing everywhere.
+// (sizing_field.hpp); null: one spacing everywhere. A remesh that folds is made again up to
+// `fold_refinements` times with the spacing halved around the input vertices it left farther
+// than their spacing away (refine_around), and while such vertices are left after a pass that
+// did not fold; the last pass that did not fold is returned.
 TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestPointIndex& surface,
                                        double target_length, double feature_angle_deg, int iterations,
                                        std::size_t max_vertices, std::size_t target_vertices = 0,
-                                       EdgeRemeshStats* stats = nullptr, const SizingOptions* sizing = nullptr);
+                                       EdgeRemeshStats* stats = nullptr, const SizingOptions* sizing = nullptr,
+                                       int fold_refinements = 2);
 
 }  // namespace gsp::cvt::detail

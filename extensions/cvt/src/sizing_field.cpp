@@ -96,4 +96,20 @@ std::vector<double> curvature_sizing(const TriangleMesh& input, const std::vecto
   return share;
 }
 
+void refine_around(const TriangleMesh& input, const std::vector<Index>& far, double spacing, double factor,
+                   double gradation, double min_share, std::vector<double>& share) {
+  if (share.empty()) share.assign(input.num_vertices(), 1.0);
+  if (far.empty() || !(spacing > 0) || !(gradation > 0)) return;
+  std::vector<double> target(far.size());   // the new share at each far vertex, from the old shares
+  for (std::size_t i = 0; i < far.size(); ++i) target[i] = std::max(min_share, factor * share[far[i]]);
+  const PointGrid grid(input.positions, spacing);
+  for (std::size_t i = 0; i < far.size(); ++i) {
+    const Vec3 p = input.positions[far[i]];
+    const double reach = (1 - target[i]) / gradation * spacing;
+    grid.near(p, reach, [&](Index w) {
+      share[w] = std::min(share[w], target[i] + gradation * distance(p, input.positions[w]) / spacing);
+    });
+  }
+}
+
 }  // namespace gsp::cvt::detail

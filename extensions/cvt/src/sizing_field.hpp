@@ -32,4 +32,12 @@ struct SizingOptions {
 std::vector<double> curvature_sizing(const TriangleMesh& input, const std::vector<std::pair<Index, Index>>& features,
                                      double spacing, const SizingOptions& options = {});
 
+// Where a remesh folded onto one side of a part thinner than the spacing (an ear, a finger, a
+// small handle: input vertices left far from it), the shares around the input vertices `far`
+// are cut to `factor` times theirs and graded back at `gradation` per spacing of straight-line
+// distance (both sides of a thin part are refined, as both need it); never below min_share.
+// `share`: one per input vertex, an empty vector standing for 1 everywhere.
+void refine_around(const TriangleMesh& input, const std::vector<Index>& far, double spacing, double factor,
+                   double gradation, double min_share, std::vector<double>& share);
+
 }  // namespace gsp::cvt::detail

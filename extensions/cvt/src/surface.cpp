@@ -58,6 +58,7 @@ void add_stats(RemeshStats& sum, const RemeshStats& s) {
   sum.pulls += s.pulls;
   sum.far_point_insertions += s.far_point_insertions;
   sum.far_point_attempts += s.far_point_attempts;
+  sum.fold_refinements += s.fold_refinements;
 }
 
 // The input's own faces `faces` as a mesh (what a kept component writes: its vertices not

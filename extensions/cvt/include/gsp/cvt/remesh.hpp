@@ -83,6 +83,7 @@ struct RemeshStats {
   std::size_t pulls = 0;                // vertices pulled onto input points far from the output
   std::size_t far_point_insertions = 0; // vertices added at input points far from the output (one more each)
   std::size_t far_point_attempts = 0;   // rounds of those insertions; all but the last were put back
+  std::size_t fold_refinements = 0;     // remeshes by edge operations made again, refined where one folded
 };
 
 struct RemeshResult {
