@@ -563,8 +563,8 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
   // A remesh that folded onto one side of parts thinner than the spacing is made again with
   // the spacing halved around the input vertices it left farther than their spacing away, and
   // again while such vertices are left (twice at most): the spacing there then follows the
-  // part instead of cutting across it (docs/cvt.md, "Refined where the remesh folded", session
-  // 50). The fold check stays the one asked for; the last pass that passes it is kept.
+  // part instead of cutting across it (docs/cvt.md, "Cap flips without rebuilds, and refined
+  // where the edge remesh folded"). The fold check stays the one asked for; the last pass that passes it is kept.
   TriangleMesh kept;
   for (int refinement = 0;; ++refinement) {
     Pass pass = remesh_once(input, surface, target_length, feature_angle_deg, iterations, max_vertices, target_vertices,
@@ -574,7 +574,6 @@ TriangleMesh remesh_by_edge_operations(const TriangleMesh& input, const ClosestP
     if (!pass.folded) {
       if (refinement == 0) return std::move(pass.out);
       kept = std::move(pass.out);
-      if (refinement >= fold_refinements) return kept;
     }
     if (refinement >= fold_refinements) return kept;
     const std::vector<Index> far = far_from(input, pass.folded ? pass.out : kept, pass.spacing, share);
